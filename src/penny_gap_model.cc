@@ -1,0 +1,222 @@
+#include "penny_gap_model.h"
+
+#include "axisymmetric_elasticity.h"
+#include "gap_mesh.h"
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_values.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/solver_control.h>
+#include <deal.II/numerics/vector_tools.h>
+
+#include <cmath>
+#include <sstream>
+
+namespace penny
+{
+  using namespace dealii;
+
+  namespace
+  {
+    const FEValuesExtractors::Vector displacement(0);
+  }
+
+  PennyGapModel::PennyGapModel(const Parameters &parameters, TimerOutput &timer)
+    : prm(parameters)
+    , timer(timer)
+    , mesh(Triangulation<2>::limit_level_difference_at_vertices)
+    , fe(FE_Q<2>(parameters.finite_element.degree), 2)
+  {
+    {
+      TimerOutput::Scope scope(timer, "mesh");
+      make_gap_mesh(mesh, prm.geometry, prm.mesh);
+    }
+    setup_system();
+    assemble_matrix();
+    factorise();
+  }
+
+  // Hanging nodes of the locally refined mesh, u_r = 0 on the axis, u_z = 0 on
+  // the ligament, and u = 0 on a clamped far boundary.
+  void PennyGapModel::setup_system()
+  {
+    TimerOutput::Scope scope(timer, "setup");
+    dofs.reinit(mesh);
+    dofs.distribute_dofs(fe);
+
+    constraints.clear();
+    DoFTools::make_hanging_node_constraints(dofs, constraints);
+    const ComponentMask radial(std::vector<bool>{true, false});
+    const ComponentMask axial(std::vector<bool>{false, true});
+    VectorTools::interpolate_boundary_values(dofs, boundary_id::axis, Functions::ZeroFunction<2>(2), constraints, radial);
+    VectorTools::interpolate_boundary_values(dofs, boundary_id::ligament, Functions::ZeroFunction<2>(2), constraints, axial);
+    if (prm.geometry.clamped_far_boundary)
+      VectorTools::interpolate_boundary_values(dofs, boundary_id::far, Functions::ZeroFunction<2>(2), constraints);
+    constraints.close();
+
+    DynamicSparsityPattern pattern(dofs.n_dofs());
+    DoFTools::make_sparsity_pattern(dofs, pattern, constraints, false);
+    sparsity.copy_from(pattern);
+    stiffness.reinit(sparsity);
+  }
+
+  // a(u, v) = int sigma(u):e(v) r dr dz, all four components (the 2 pi dropped).
+  void PennyGapModel::assemble_matrix()
+  {
+    TimerOutput::Scope scope(timer, "assembly");
+    const QGauss<2> quadrature(fe.degree + 2);
+    FEValues<2>     fe_values(fe, quadrature, update_values | update_gradients | update_quadrature_points | update_JxW_values);
+    const unsigned int dofs_per_cell = fe.n_dofs_per_cell();
+    FullMatrix<double> cell_matrix(dofs_per_cell, dofs_per_cell);
+    std::vector<types::global_dof_index> local_dofs(dofs_per_cell);
+    std::vector<AxisymmetricTensor>      shape_strain(dofs_per_cell);
+    const double lambda = prm.material.lame_lambda();
+    const double mu     = prm.material.lame_mu();
+
+    for (const auto &cell : dofs.active_cell_iterators())
+      {
+        fe_values.reinit(cell);
+        cell_matrix = 0;
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const double r = fe_values.quadrature_point(q)[0];
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              shape_strain[i] = strain(fe_values[displacement].gradient(i, q), fe_values[displacement].value(i, q)[0], r);
+            for (unsigned int i = 0; i < dofs_per_cell; ++i)
+              {
+                const AxisymmetricTensor sigma_i = stress(shape_strain[i], lambda, mu);
+                for (unsigned int j = 0; j <= i; ++j)
+                  cell_matrix(i, j) += sigma_i.contract(shape_strain[j]) * r * fe_values.JxW(q);
+              }
+          }
+        for (unsigned int i = 0; i < dofs_per_cell; ++i)
+          for (unsigned int j = i + 1; j < dofs_per_cell; ++j)
+            cell_matrix(i, j) = cell_matrix(j, i);
+        cell->get_dof_indices(local_dofs);
+        constraints.distribute_local_to_global(cell_matrix, local_dofs, stiffness);
+      }
+  }
+
+  void PennyGapModel::factorise()
+  {
+    TimerOutput::Scope scope(timer, "solve");
+    if (prm.linear_solver.type == LinearSolverParameters::Type::direct)
+      direct_solver.factorize(stiffness);
+    else
+      {
+        trilinos_stiffness.reinit(stiffness);
+        TrilinosWrappers::PreconditionAMG::AdditionalData data;
+        data.elliptic              = true;
+        data.higher_order_elements = fe.degree > 1;
+        data.smoother_sweeps       = 2;
+        data.aggregation_threshold = 0.02;
+        DoFTools::extract_constant_modes(dofs, ComponentMask(), data.constant_modes);
+        amg.initialize(trilinos_stiffness, data);
+      }
+  }
+
+  Vector<double> PennyGapModel::solve(const FaceLoad &load)
+  {
+    Vector<double> rhs(dofs.n_dofs());
+    {
+      // int_{z=0, r<c} p(r) v_z r dr: the traction p e_z opens the gap.
+      TimerOutput::Scope scope(timer, "assembly");
+      const QGauss<1> face_quadrature(fe.degree + 2);
+      FEFaceValues<2> fe_face(fe, face_quadrature, update_values | update_quadrature_points | update_JxW_values);
+      Vector<double>  cell_rhs(fe.n_dofs_per_cell());
+      std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dofs.active_cell_iterators())
+        for (const auto &face : cell->face_iterators())
+          if (face->at_boundary() && face->boundary_id() == boundary_id::gap_face)
+            {
+              fe_face.reinit(cell, face);
+              cell_rhs = 0;
+              for (const unsigned int q : fe_face.quadrature_point_indices())
+                {
+                  const double r = fe_face.quadrature_point(q)[0];
+                  const double p = load(r);
+                  for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                    cell_rhs(i) += p * fe_face[displacement].value(i, q)[1] * r * fe_face.JxW(q);
+                }
+              cell->get_dof_indices(local_dofs);
+              constraints.distribute_local_to_global(cell_rhs, local_dofs, rhs);
+            }
+    }
+    if (!std::isfinite(rhs.l2_norm()))
+      throw std::runtime_error("assembly: the load vector holds NaN or Inf (check Load/Expression)");
+
+    TimerOutput::Scope scope(timer, "solve");
+    Vector<double> u(dofs.n_dofs());
+    report.iterations = 0;
+    if (prm.linear_solver.type == LinearSolverParameters::Type::direct)
+      direct_solver.vmult(u, rhs);
+    else
+      {
+        SolverControl control(prm.linear_solver.max_iterations, prm.linear_solver.tolerance * rhs.l2_norm(), false, false);
+        SolverCG<Vector<double>> cg(control);
+        try
+          {
+            cg.solve(trilinos_stiffness, u, rhs, amg);
+          }
+        catch (const SolverControl::NoConvergence &failure)
+          {
+            throw std::runtime_error("solve: CG with AMG did not converge in " + std::to_string(failure.last_step) +
+                                     " iterations (Linear solver/Maximum iterations)");
+          }
+        report.iterations = control.last_step();
+      }
+
+    // The graded mesh makes the matrix ill-conditioned (cell widths span many
+    // orders of magnitude); a few steps of iterative refinement with the same
+    // factors restore the residual an LU solve loses to rounding.
+    Vector<double> residual(dofs.n_dofs()), correction(dofs.n_dofs());
+    report.relative_residual = stiffness.residual(residual, u, rhs) / rhs.l2_norm();
+    for (unsigned int step = 0; step < 3 && report.relative_residual > 1e-3 * prm.linear_solver.tolerance &&
+                                prm.linear_solver.type == LinearSolverParameters::Type::direct;
+         ++step)
+      {
+        direct_solver.vmult(correction, residual);
+        u += correction;
+        report.relative_residual = stiffness.residual(residual, u, rhs) / rhs.l2_norm();
+      }
+    if (!std::isfinite(report.relative_residual) || !std::isfinite(u.l2_norm()))
+      throw std::runtime_error("solve: the displacement holds NaN or Inf");
+    if (report.relative_residual > prm.linear_solver.tolerance)
+      {
+        std::ostringstream message;
+        message << "solve: relative residual " << report.relative_residual
+                << " exceeds Linear solver/Tolerance = " << prm.linear_solver.tolerance;
+        throw std::runtime_error(message.str());
+      }
+    constraints.distribute(u);
+    return u;
+  }
+
+  double PennyGapModel::opening_at_centre(const Vector<double> &u) const
+  {
+    Vector<double> value(2);
+    VectorTools::point_value(dofs, u, Point<2>(0, 0), value);
+    return value[1];
+  }
+
+  double PennyGapModel::gap_volume(const Vector<double> &u) const
+  {
+    const QGauss<1>     face_quadrature(fe.degree + 2);
+    FEFaceValues<2>     fe_face(fe, face_quadrature, update_values | update_quadrature_points | update_JxW_values);
+    std::vector<Vector<double>> values(face_quadrature.size(), Vector<double>(2));
+    double volume = 0;
+    for (const auto &cell : dofs.active_cell_iterators())
+      for (const auto &face : cell->face_iterators())
+        if (face->at_boundary() && face->boundary_id() == boundary_id::gap_face)
+          {
+            fe_face.reinit(cell, face);
+            fe_face.get_function_values(u, values);
+            for (const unsigned int q : fe_face.quadrature_point_indices())
+              volume += 2 * 2 * numbers::PI * fe_face.quadrature_point(q)[0] * values[q][1] * fe_face.JxW(q);
+          }
+    return volume;
+  }
+} // namespace penny

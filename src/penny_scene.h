@@ -1,0 +1,36 @@
+// The penny-gap scene: one FE solve of the scene's load, the J-integral on
+// every ring, and the FE figures beside Sneddon's closed forms, printed and
+// written to the output folder.
+#pragma once
+
+#include "parameters.h"
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <ostream>
+#include <vector>
+
+namespace penny
+{
+  struct RingResult
+  {
+    double radius;                   // in units of c
+    double energy_release_rate;      // J (J/m^2)
+    double stress_intensity_factor;  // |K_I| = sqrt(E' J) (Pa m^1/2)
+  };
+
+  struct PennySceneResults
+  {
+    std::vector<RingResult> rings;
+    double                  exact_stress_intensity_factor;
+    double                  opening_at_centre, exact_opening_at_centre; // one face (m)
+    double                  gap_volume, exact_gap_volume;               // both faces (m^3)
+    unsigned int            n_cells;
+    unsigned int            n_dofs;
+    double                  relative_residual;
+  };
+
+  PennySceneResults run_penny_scene(const Parameters             &parameters,
+                                    const dealii::ParameterHandler &prm,
+                                    std::ostream                 &log);
+} // namespace penny

@@ -1,0 +1,12 @@
+// One main for every Boost.Test module: deal.II wants MPI initialised first.
+#include <deal.II/base/mpi.h>
+
+#include <boost/test/unit_test.hpp>
+
+bool init_unit_test();
+
+int main(int argc, char *argv[])
+{
+  dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
+  return boost::unit_test::unit_test_main(&init_unit_test, argc, argv);
+}
