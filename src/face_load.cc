@@ -38,6 +38,23 @@ namespace penny
       }
   }
 
+  FaceLoad FaceLoad::unit_uniform()
+  {
+    LoadParameters load;
+    load.type           = Type::uniform;
+    load.peak_tension   = 1;
+    load.tension_radius = 1;
+    return FaceLoad(load, 1);
+  }
+
+  FaceLoad FaceLoad::unit_quadratic()
+  {
+    LoadParameters load;
+    load.type       = Type::expression;
+    load.expression = "r^2";
+    return FaceLoad(load, 1);
+  }
+
   double FaceLoad::operator()(const double r) const
   {
     switch (load.type)

@@ -17,6 +17,10 @@ namespace penny
 
     FaceLoad(const LoadParameters &load, double gap_radius);
 
+    // The unit load cases of physics.md section 1: p = 1 Pa and p = r^2 (Pa/m^2).
+    static FaceLoad unit_uniform();
+    static FaceLoad unit_quadratic();
+
     double operator()(double r) const;
 
     Type   type() const { return load.type; }

@@ -71,8 +71,11 @@ namespace penny
           for (const auto &cell : triangulation.active_cell_iterators())
             {
               const double width = cell->extent_in_direction(0);
+              // Ties (distance exactly a multiple of the width) are common on a
+              // quadtree; the relative margin decides them the same way for
+              // every c, so meshes built for different c are exactly similar.
               if (width > tip_width * (1 + 1e-9) &&
-                  distance_to_cell(tip, cell) < mesh.grading_distance * width)
+                  distance_to_cell(tip, cell) < mesh.grading_distance * width * (1 - 1e-9))
                 {
                   cell->set_refine_flag();
                   refined = true;

@@ -31,6 +31,25 @@ namespace penny
     return bilinear(u, load, u, load, rho);
   }
 
+  double JIntegral::stress_intensity_factor(const Vector<double> &u, const FaceLoad &load, const double rho) const
+  {
+    const double G = energy_release_rate(u, load, rho);
+    return std::sqrt(model.parameters().material.plane_strain_modulus() * std::max(G, 0.));
+  }
+
+  double JIntegral::signed_stress_intensity_factor(const Vector<double> &u,
+                                                   const FaceLoad       &load,
+                                                   const Vector<double> &u_ref,
+                                                   const FaceLoad       &load_ref,
+                                                   const double          rho) const
+  {
+    const double e_prime = model.parameters().material.plane_strain_modulus();
+    const double k_ref   = stress_intensity_factor(u_ref, load_ref, rho);
+    if (!(k_ref > 0))
+      throw std::runtime_error("J-integral: the reference load gives K_I = 0; it cannot sign K_I");
+    return e_prime * bilinear(u, load, u_ref, load_ref, rho) / k_ref;
+  }
+
   // Polarised integrands: sigma(u)_ij d_r v_i is replaced by the symmetric
   // mean of the (u, v) and (v, u) products, W by sigma(u):e(v)/2.
   double JIntegral::bilinear(const Vector<double> &u,

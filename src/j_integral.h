@@ -41,6 +41,18 @@ namespace penny
     // G = B(u, u) (J/m^2).
     double energy_release_rate(const dealii::Vector<double> &u, const FaceLoad &load, double rho) const;
 
+    // |K_I| = sqrt(E' G) (Pa m^1/2).
+    double stress_intensity_factor(const dealii::Vector<double> &u, const FaceLoad &load, double rho) const;
+
+    // Signed K_I = E' B(u, u_ref)/K_ref, with a reference solution u_ref on the
+    // same mesh whose K_ref = sqrt(E' B(u_ref, u_ref)) is known to be positive
+    // (a tension opening the gap, e.g. uniform pressure).
+    double signed_stress_intensity_factor(const dealii::Vector<double> &u,
+                                          const FaceLoad               &load,
+                                          const dealii::Vector<double> &u_ref,
+                                          const FaceLoad               &load_ref,
+                                          double                        rho) const;
+
   private:
     const PennyGapModel &model;
   };

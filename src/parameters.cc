@@ -148,12 +148,12 @@ namespace penny
                    type_name == "parabolic" ? Type::parabolic :
                                               Type::expression;
     peak_tension = prm.get_double("Peak tension P");
+    summit_radius = prm.get_double("Summit radius R_p");
+    require(summit_radius > 0, "Load/Summit radius R_p", summit_radius, "(0, inf)");
     if (prm.get("Parabola given by") == "a")
       tension_radius = prm.get_double("Tension radius a");
     else
       {
-        const double summit_radius = prm.get_double("Summit radius R_p");
-        require(summit_radius > 0, "Load/Summit radius R_p", summit_radius, "(0, inf)");
         require(peak_tension > 0, "Load/Peak tension P", peak_tension,
                 "(0, inf) when the parabola is given by R_p");
         tension_radius = std::sqrt(2 * summit_radius * peak_tension);
@@ -161,6 +161,35 @@ namespace penny
     expression = prm.get("Expression");
     prm.leave_subsection();
     require(tension_radius > 0, "Load/Tension radius a", tension_radius, "(0, inf)");
+  }
+
+  void AdhesionParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Adhesion");
+    prm.declare_entry("Critical stress intensity K_Ic", "1.28e6", Double(0),
+                      "Toughness of the interface: an adhesive gap is in equilibrium at K_I = K_Ic "
+                      "(K_Ic = sqrt(E' G_c)). The load's summit radius R_p sets the parabola. "
+                      "Units: Pa m^1/2.");
+    prm.declare_entry("Smallest c_hat", "0.3", Double(0),
+                      "Gap-tension curve: smallest c/c_min. Units: none.");
+    prm.declare_entry("Largest c_hat", "4", Double(0),
+                      "Gap-tension curve: largest c/c_min. Units: none.");
+    prm.declare_entry("Number of points", "24", Integer(2, 1000),
+                      "Gap-tension curve: points, evenly spaced in c_hat. Units: none.");
+    prm.leave_subsection();
+  }
+
+  void AdhesionParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Adhesion");
+    critical_stress_intensity = prm.get_double("Critical stress intensity K_Ic");
+    smallest_c_hat            = prm.get_double("Smallest c_hat");
+    largest_c_hat             = prm.get_double("Largest c_hat");
+    n_curve_points            = prm.get_integer("Number of points");
+    prm.leave_subsection();
+    require(critical_stress_intensity > 0, "Adhesion/Critical stress intensity K_Ic", critical_stress_intensity, "(0, inf)");
+    require(smallest_c_hat > 0, "Adhesion/Smallest c_hat", smallest_c_hat, "(0, Largest c_hat)");
+    require(largest_c_hat > smallest_c_hat, "Adhesion/Largest c_hat", largest_c_hat, "(Smallest c_hat, inf)");
   }
 
   void MeshParameters::declare(ParameterHandler &prm)
@@ -272,12 +301,20 @@ namespace penny
 
   void Parameters::declare(ParameterHandler &prm)
   {
-    prm.declare_entry("Scene", "penny-gap", Selection("penny-gap"),
-                      "penny-gap: one FE solve of the load in 'Load', K_I from J-integrals on every "
-                      "ring beside Sneddon's closed form, face opening and gap volume.");
+    prm.declare_entry("Scene", "penny-gap",
+                      Selection("penny-gap|gap-size-adhesionless|adhesive-minimum|gap-tension-curve|"
+                                "adhesive-equilibrium"),
+                      "penny-gap: one FE solve of the load in 'Load', K_I from J-integrals (and signed "
+                      "K_I) on every ring beside Sneddon's closed form, face opening and gap volume. "
+                      "gap-size-adhesionless: the gap radius c where the FE K_I of the parabola (P, a) "
+                      "vanishes. adhesive-minimum: the minimum over c of the FE tension P(c) at "
+                      "K_I = K_Ic for the summit radius R_p, giving psi and c_min. gap-tension-curve: "
+                      "p_hat(c_hat) from FE. adhesive-equilibrium: the FE gap radius on the stable "
+                      "branch for the peak tension P. The c-searches keep R/c and H/c of 'Geometry'.");
     GeometryParameters::declare(prm);
     MaterialParameters::declare(prm);
     LoadParameters::declare(prm);
+    AdhesionParameters::declare(prm);
     MeshParameters::declare(prm);
     FiniteElementParameters::declare(prm);
     LinearSolverParameters::declare(prm);
@@ -291,6 +328,7 @@ namespace penny
     geometry.parse(prm);
     material.parse(prm);
     load.parse(prm);
+    adhesion.parse(prm);
     mesh.parse(prm);
     finite_element.parse(prm);
     linear_solver.parse(prm);

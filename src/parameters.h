@@ -55,6 +55,17 @@ namespace penny
     double      peak_tension;   // P (Pa)
     double      tension_radius; // a (m); for a parabola given by R_p, a^2 = 2 R_p P
     std::string expression;     // p(r) in Pa, r in m
+    double      summit_radius;  // R_p (m^2/Pa), a^2 = 2 R_p P
+
+    static void declare(dealii::ParameterHandler &prm);
+    void        parse(dealii::ParameterHandler &prm);
+  };
+
+  struct AdhesionParameters
+  {
+    double critical_stress_intensity; // K_Ic (Pa m^1/2)
+    double smallest_c_hat, largest_c_hat; // range of the gap-tension curve, c/c_min
+    unsigned int n_curve_points;
 
     static void declare(dealii::ParameterHandler &prm);
     void        parse(dealii::ParameterHandler &prm);
@@ -125,6 +136,7 @@ namespace penny
     GeometryParameters      geometry;
     MaterialParameters      material;
     LoadParameters          load;
+    AdhesionParameters      adhesion;
     MeshParameters          mesh;
     FiniteElementParameters finite_element;
     LinearSolverParameters  linear_solver;

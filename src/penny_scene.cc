@@ -27,15 +27,21 @@ namespace penny
     void write_ring_table(std::ostream &out, const PennySceneResults &results, const char separator)
     {
       const int width = separator == ',' ? 0 : 18;
-      out << std::setw(width) << "ring (c)" << separator << std::setw(width) << "J (J/m^2)" << separator
-          << std::setw(width) << "K_I FE (Pa m^1/2)" << separator << std::setw(width) << "K_I exact (Pa m^1/2)"
-          << separator << std::setw(width) << "relative error" << '\n';
-      out << std::setprecision(10) << std::scientific;
+      const std::vector<std::string> columns = {"ring (c)",
+                                                "J (J/m^2)",
+                                                "|K_I| FE (Pa m^1/2)",
+                                                "K_I signed FE (Pa m^1/2)",
+                                                "K_I exact (Pa m^1/2)",
+                                                "|K_I| relative error"};
+      for (unsigned int i = 0; i < columns.size(); ++i)
+        out << (i > 0 ? std::string(1, separator) : "") << std::setw(width + 6 * (i == 3)) << columns[i];
+      out << '\n' << std::setprecision(10) << std::scientific;
+      const double exact = results.exact_stress_intensity_factor;
       for (const auto &ring : results.rings)
         out << std::setw(width) << ring.radius << separator << std::setw(width) << ring.energy_release_rate
-            << separator << std::setw(width) << ring.stress_intensity_factor << separator << std::setw(width)
-            << results.exact_stress_intensity_factor << separator << std::setw(width)
-            << relative_error(ring.stress_intensity_factor, results.exact_stress_intensity_factor) << '\n';
+            << separator << std::setw(width) << ring.stress_intensity_factor << separator << std::setw(width + 6)
+            << ring.signed_stress_intensity_factor << separator << std::setw(width) << exact << separator
+            << std::setw(width) << relative_error(ring.stress_intensity_factor, std::abs(exact)) << '\n';
       out << std::defaultfloat;
     }
 
@@ -61,16 +67,17 @@ namespace penny
     }
   } // namespace
 
-  PennySceneResults run_penny_scene(const Parameters &parameters, const ParameterHandler &prm, std::ostream &log)
+  PennySceneResults run_penny_scene(const Parameters &parameters, std::ostream &log)
   {
     const std::filesystem::path directory(parameters.output.directory);
-    prepare_output_directory(directory);
 
     TimerOutput     timer(log, TimerOutput::never, TimerOutput::wall_times);
     const double    c = parameters.geometry.gap_radius;
     const FaceLoad  load(parameters.load, c);
     PennyGapModel   model(parameters, timer);
-    const Vector<double> u = model.solve(load);
+    const Vector<double> u         = model.solve(load);
+    const FaceLoad       reference = FaceLoad::unit_uniform();
+    const Vector<double> u_ref     = model.solve(reference);
 
     PennySceneResults results;
     {
@@ -80,7 +87,10 @@ namespace penny
       for (const double rho : parameters.j_integral.ring_radii)
         {
           const double G = j_integral.energy_release_rate(u, load, rho * c);
-          results.rings.push_back({rho, G, std::sqrt(e_prime * std::max(G, 0.))});
+          results.rings.push_back({rho,
+                                   G,
+                                   std::sqrt(e_prime * std::max(G, 0.)),
+                                   j_integral.signed_stress_intensity_factor(u, load, u_ref, reference, rho * c)});
         }
       const SneddonSolution exact(load, c, e_prime);
       results.exact_stress_intensity_factor = exact.stress_intensity_factor();
@@ -101,11 +111,12 @@ namespace penny
       }
 
     write_ring_table(log, results, ' ');
+    if (results.rings.front().signed_stress_intensity_factor < 0)
+      log << "K_I < 0: the faces would interpenetrate; no open gap of this radius carries this load.\n";
     log << '\n';
     write_summary(log, results, parameters, timer);
     write_atomically(directory / "rings.csv", [&](std::ostream &out) { write_ring_table(out, results, ','); });
     write_atomically(directory / "summary.txt", [&](std::ostream &out) { write_summary(out, results, parameters, timer); });
-    write_atomically(directory / "parameters.prm", [&](std::ostream &out) { prm.print_parameters(out, ParameterHandler::PRM); });
     return results;
   }
 } // namespace penny

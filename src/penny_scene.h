@@ -5,8 +5,6 @@
 
 #include "parameters.h"
 
-#include <deal.II/base/parameter_handler.h>
-
 #include <ostream>
 #include <vector>
 
@@ -17,6 +15,7 @@ namespace penny
     double radius;                   // in units of c
     double energy_release_rate;      // J (J/m^2)
     double stress_intensity_factor;  // |K_I| = sqrt(E' J) (Pa m^1/2)
+    double signed_stress_intensity_factor; // from B(u, u_ref), u_ref under unit pressure
   };
 
   struct PennySceneResults
@@ -30,7 +29,5 @@ namespace penny
     double                  relative_residual;
   };
 
-  PennySceneResults run_penny_scene(const Parameters             &parameters,
-                                    const dealii::ParameterHandler &prm,
-                                    std::ostream                 &log);
+  PennySceneResults run_penny_scene(const Parameters &parameters, std::ostream &log);
 } // namespace penny

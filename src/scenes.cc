@@ -1,14 +1,32 @@
 #include "scenes.h"
 
+#include "adhesion_scenes.h"
+#include "output_files.h"
 #include "penny_scene.h"
 
 namespace penny
 {
+  // Checks the output folder first and records the parameters last, so a run
+  // that fails writes nothing.
   void run_scene(const Parameters &parameters, const dealii::ParameterHandler &prm, std::ostream &log)
   {
+    const std::filesystem::path directory(parameters.output.directory);
+    prepare_output_directory(directory);
+
     if (parameters.scene == "penny-gap")
-      run_penny_scene(parameters, prm, log);
+      run_penny_scene(parameters, log);
+    else if (parameters.scene == "gap-size-adhesionless")
+      run_gap_size_scene(parameters, log);
+    else if (parameters.scene == "adhesive-minimum")
+      run_adhesive_minimum_scene(parameters, log);
+    else if (parameters.scene == "gap-tension-curve")
+      run_gap_tension_curve_scene(parameters, log);
+    else if (parameters.scene == "adhesive-equilibrium")
+      run_adhesive_equilibrium_scene(parameters, log);
     else
       throw InputError("Scene = '" + parameters.scene + "' has no implementation");
+
+    write_atomically(directory / "parameters.prm",
+                     [&](std::ostream &out) { prm.print_parameters(out, dealii::ParameterHandler::PRM); });
   }
 } // namespace penny

@@ -1,0 +1,43 @@
+// The family of penny-gap models indexed by the gap radius c: for each c the
+// scene's model is rebuilt with its domain and mesh scaled to c (R/c and H/c
+// as in the Geometry section), assembled, factorised and solved. Root finders
+// and minimisers over c call it; every evaluation is a full FE solve.
+#pragma once
+
+#include "parameters.h"
+
+#include <deal.II/base/timer.h>
+
+namespace penny
+{
+  // K_I (Pa m^1/2) of the unit load cases p = 1 Pa and p = r^2 (Pa/m^2) on a gap
+  // of radius c. Any parabola is a combination:
+  // K_I[P (1 - r^2/a^2)] = P K_uniform - (P/a^2) K_quadratic.
+  struct UnitLoadSifs
+  {
+    double uniform;
+    double quadratic;
+  };
+
+  class GapFamily
+  {
+  public:
+    GapFamily(const Parameters &parameters, dealii::TimerOutput &timer);
+
+    // Signed K_I of the parabola P (1 - r^2/a^2) on a gap of radius c: the
+    // interaction form with the unit-pressure solution as reference.
+    double parabolic_stress_intensity_factor(double c, double P, double a);
+
+    // Both unit load cases from one factorisation.
+    UnitLoadSifs unit_load_sifs(double c);
+
+    unsigned int n_solves() const { return solves; }
+
+  private:
+    Parameters scaled_to(double c) const;
+
+    const Parameters     base;
+    dealii::TimerOutput &timer;
+    unsigned int         solves = 0;
+  };
+} // namespace penny

@@ -1,0 +1,82 @@
+// The paper's constants recovered from FE solves on test-sized meshes: the
+// adhesionless root c/a = sqrt(3/2), the adhesive minimum (psi, c_min) and the
+// stable-branch equilibrium radius, plus the closed forms they are checked by.
+#define BOOST_TEST_MODULE adhesion
+#define BOOST_TEST_NO_MAIN
+#include "adhesive_gap.h"
+#include "test_support.h"
+
+#include <boost/math/tools/minima.hpp>
+#include <boost/test/unit_test.hpp>
+
+#include <cmath>
+#include <iostream>
+
+namespace tt = boost::test_tools;
+using namespace penny;
+
+namespace
+{
+  Parameters test_size(const unsigned int degree = 3)
+  {
+    Parameters parameters            = default_parameters();
+    parameters.mesh.tip_levels       = 16;
+    parameters.finite_element.degree = degree;
+    return parameters;
+  }
+
+  const double R_p  = 7.8125e-7;
+  const double K_Ic = 1.28e6;
+} // namespace
+
+BOOST_AUTO_TEST_CASE(closed_form_constants)
+{
+  // Minimising P(c) numerically reproduces psi and c_min.
+  const double scale = adhesion_length(R_p, K_Ic);
+  const auto [c_min, p0] = boost::math::tools::brent_find_minima(
+    [](const double c) { return closed_form::adhesive_tension(c, R_p, K_Ic); }, 0.1 * scale, 10 * scale, 26);
+  BOOST_TEST(p0 / adhesion_tension(R_p, K_Ic) == closed_form::psi, tt::tolerance(1e-12));
+  BOOST_TEST(c_min / scale == closed_form::c_min_factor, tt::tolerance(1e-7));
+
+  const double c_t = *closed_form::stable_gap_radius(2e6, R_p, K_Ic);
+  BOOST_TEST(closed_form::adhesive_tension(c_t, R_p, K_Ic) == 2e6, tt::tolerance(1e-12));
+  BOOST_TEST(c_t > c_min);
+  BOOST_TEST(!closed_form::stable_gap_radius(0.99 * p0, R_p, K_Ic).has_value());
+}
+
+BOOST_AUTO_TEST_CASE(adhesionless_root)
+{
+  dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+  GapFamily           gaps(test_size(), timer);
+  const double        a = 0.6;
+  BOOST_TEST(fe_adhesionless_gap_radius(gaps, 1e6, a) / a == closed_form::adhesionless_c_over_a, tt::tolerance(1e-4));
+}
+
+BOOST_AUTO_TEST_CASE(adhesive_minimum_and_equilibrium)
+{
+  dealii::TimerOutput   timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+  GapFamily             gaps(test_size(), timer);
+  const AdhesiveMinimum minimum = fe_adhesive_minimum(gaps, R_p, K_Ic);
+  BOOST_TEST(minimum.tension / adhesion_tension(R_p, K_Ic) == closed_form::psi, tt::tolerance(1e-4));
+  BOOST_TEST(minimum.gap_radius / adhesion_length(R_p, K_Ic) == closed_form::c_min_factor, tt::tolerance(1e-4));
+
+  const double P = 1.3 * minimum.tension;
+  BOOST_TEST(*fe_stable_gap_radius(gaps, P, R_p, K_Ic, minimum) == *closed_form::stable_gap_radius(P, R_p, K_Ic),
+             tt::tolerance(1e-4));
+  BOOST_TEST(!fe_stable_gap_radius(gaps, 0.999 * minimum.tension, R_p, K_Ic, minimum).has_value());
+}
+
+// psi is a pure number: R_p and K_Ic over six orders of magnitude each give
+// the same FE value, because each search builds meshes similar to one another.
+BOOST_AUTO_TEST_CASE(psi_independent_of_scales)
+{
+  dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+  GapFamily           gaps(test_size(2), timer);
+  const auto psi = [&](const double r_p, const double k_ic) {
+    return fe_adhesive_minimum(gaps, r_p, k_ic).tension / adhesion_tension(r_p, k_ic);
+  };
+  const double reference = psi(R_p, K_Ic);
+  for (const double r_p : {1e-9, 1e-3})
+    for (const double k_ic : {1e3, 1e9})
+      BOOST_TEST(psi(r_p, k_ic) == reference, tt::tolerance(1e-8));
+}
