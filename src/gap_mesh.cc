@@ -2,6 +2,7 @@
 
 #include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
+#include <deal.II/grid/grid_tools.h>
 
 #include <gmsh.h>
 
@@ -51,9 +52,16 @@ namespace penny
     // until the tip cells are c/2^levels wide. Far from the tip cells double in
     // width every few cells: a geometric grading, ratio 2, out to R and H.
     void generate_quadtree(Triangulation<2>         &triangulation,
-                           const GeometryParameters &geometry,
+                           const GeometryParameters &physical_geometry,
                            const MeshParameters     &mesh)
     {
+      // Built on a domain whose part above z0 is compressed along z by the aspect
+      // ratio, then stretched back: cells above z0 become that many times
+      // taller than wide, while the tip zone keeps square cells.
+      const double       ratio    = mesh.cell_aspect_ratio;
+      const double       z0       = std::min(physical_geometry.gap_radius, physical_geometry.domain_height / 2);
+      GeometryParameters geometry = physical_geometry;
+      geometry.domain_height      = z0 + (physical_geometry.domain_height - z0) / ratio;
       const double c = geometry.gap_radius;
       const double s =
         c * std::pow(2., std::floor(std::log2(std::min(geometry.domain_radius, geometry.domain_height) / (2 * c))));
@@ -96,6 +104,10 @@ namespace penny
                                   x[0] < c         ? boundary_id::gap_face :
                                                      boundary_id::ligament);
           }
+      if (ratio != 1)
+        GridTools::transform(
+          [&](const Point<2> &x) { return Point<2>(x[0], x[1] <= z0 ? x[1] : z0 + ratio * (x[1] - z0)); },
+          triangulation);
     }
 
     // Meshes a .geo with gmsh, passing c, R and H as parser numbers (the .geo

@@ -203,6 +203,10 @@ namespace penny
     prm.declare_entry("Grading distance", "2", Double(0.5, 100),
                       "A cell is refined while it lies closer to the tip than this many of its own "
                       "widths; larger values give more cells per ring. Units: cell widths.");
+    prm.declare_entry("Cell aspect ratio", "1", Double(1, 1000),
+                      "builtin only: cells above z = min(c, H/2) are stretched along z to this many "
+                      "times their width; the tip zone keeps square cells. A stress test of the "
+                      "mesh and the J rings. Units: none.");
     prm.declare_entry("Global refinements", "0", Integer(0, 10),
                       "Uniform refinements after the grading (h-convergence). Units: none.");
     prm.declare_entry("Mesh file", "../meshes/penny-gap.geo", FileName(),
@@ -219,6 +223,7 @@ namespace penny
     tip_levels         = prm.get_integer("Tip refinement levels");
     grading_distance   = prm.get_double("Grading distance");
     global_refinements = prm.get_integer("Global refinements");
+    cell_aspect_ratio  = prm.get_double("Cell aspect ratio");
     mesh_file          = prm.get("Mesh file");
     prm.leave_subsection();
   }
@@ -244,7 +249,7 @@ namespace penny
     prm.declare_entry("Type", "direct", Selection("direct|cg-amg"),
                       "direct: sparse LU (UMFPACK). cg-amg: conjugate gradients preconditioned "
                       "with Trilinos' algebraic multigrid, for large meshes.");
-    prm.declare_entry("Tolerance", "1e-10", Double(0, 1),
+    prm.declare_entry("Tolerance", "1e-9", Double(0, 1),
                       "Relative residual |A u - b|/|b| the iterative solver must reach; a direct "
                       "solve that misses it is an error too. Units: none.");
     prm.declare_entry("Maximum iterations", "10000", Integer(1),
@@ -299,18 +304,35 @@ namespace penny
     prm.leave_subsection();
   }
 
+  void StabilityParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Stability");
+    prm.declare_entry("Target accuracy", "1e-5", Double(0, 1),
+                      "Relative K_I error a case of the stability scene must reach to pass; a case "
+                      "expected to miss it is flagged with the reason. Units: none.");
+    prm.leave_subsection();
+  }
+
+  void StabilityParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Stability");
+    target_accuracy = prm.get_double("Target accuracy");
+    prm.leave_subsection();
+  }
+
   void Parameters::declare(ParameterHandler &prm)
   {
     prm.declare_entry("Scene", "penny-gap",
                       Selection("penny-gap|gap-size-adhesionless|adhesive-minimum|gap-tension-curve|"
-                                "adhesive-equilibrium"),
+                                "adhesive-equilibrium|stability"),
                       "penny-gap: one FE solve of the load in 'Load', K_I from J-integrals (and signed "
                       "K_I) on every ring beside Sneddon's closed form, face opening and gap volume. "
                       "gap-size-adhesionless: the gap radius c where the FE K_I of the parabola (P, a) "
                       "vanishes. adhesive-minimum: the minimum over c of the FE tension P(c) at "
                       "K_I = K_Ic for the summit radius R_p, giving psi and c_min. gap-tension-curve: "
                       "p_hat(c_hat) from FE. adhesive-equilibrium: the FE gap radius on the stable "
-                      "branch for the peak tension P. The c-searches keep R/c and H/c of 'Geometry'.");
+                      "branch for the peak tension P. The c-searches keep R/c and H/c of 'Geometry'. "
+                      "stability: stiff and extreme cases around these parameters in one table.");
     GeometryParameters::declare(prm);
     MaterialParameters::declare(prm);
     LoadParameters::declare(prm);
@@ -320,6 +342,7 @@ namespace penny
     LinearSolverParameters::declare(prm);
     JIntegralParameters::declare(prm);
     OutputParameters::declare(prm);
+    StabilityParameters::declare(prm);
   }
 
   void Parameters::parse(ParameterHandler &prm)
@@ -334,6 +357,7 @@ namespace penny
     linear_solver.parse(prm);
     j_integral.parse(prm);
     output.parse(prm);
+    stability.parse(prm);
 
     const double c          = geometry.gap_radius;
     const double room       = std::min(geometry.domain_height, geometry.domain_radius - c);

@@ -71,6 +71,14 @@ namespace penny
     void        parse(dealii::ParameterHandler &prm);
   };
 
+  struct StabilityParameters
+  {
+    double target_accuracy; // relative K_I error a stability case must reach
+
+    static void declare(dealii::ParameterHandler &prm);
+    void        parse(dealii::ParameterHandler &prm);
+  };
+
   struct MeshParameters
   {
     enum class Generator
@@ -82,6 +90,7 @@ namespace penny
     unsigned int tip_levels;        // refinement levels below cell size c at the tip
     double       grading_distance;  // refine a cell closer to the tip than this many cell sizes
     unsigned int global_refinements;
+    double       cell_aspect_ratio; // builtin cells are this many times taller than wide
     std::string  mesh_file;
 
     static void declare(dealii::ParameterHandler &prm);
@@ -142,6 +151,7 @@ namespace penny
     LinearSolverParameters  linear_solver;
     JIntegralParameters     j_integral;
     OutputParameters        output;
+    StabilityParameters     stability;
 
     static void declare(dealii::ParameterHandler &prm);
     void        parse(dealii::ParameterHandler &prm);

@@ -150,13 +150,15 @@ namespace penny
 
     TimerOutput::Scope scope(timer, "solve");
     Vector<double> u(dofs.n_dofs());
-    report.iterations = 0;
+    report.iterations         = 0;
+    report.condition_estimate = 0;
     if (prm.linear_solver.type == LinearSolverParameters::Type::direct)
       direct_solver.vmult(u, rhs);
     else
       {
         SolverControl control(prm.linear_solver.max_iterations, prm.linear_solver.tolerance * rhs.l2_norm(), false, false);
         SolverCG<Vector<double>> cg(control);
+        cg.connect_condition_number_slot([this](const double kappa) { report.condition_estimate = kappa; });
         try
           {
             cg.solve(trilinos_stiffness, u, rhs, amg);

@@ -26,6 +26,7 @@ namespace penny
   {
     double       relative_residual; // |A u - b| / |b|
     unsigned int iterations;        // 0 for the direct solver
+    double       condition_estimate; // of the preconditioned matrix, from CG; 0 for the direct solver
   };
 
   class PennyGapModel

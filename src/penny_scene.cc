@@ -67,16 +67,14 @@ namespace penny
     }
   } // namespace
 
-  PennySceneResults run_penny_scene(const Parameters &parameters, std::ostream &log)
+  PennySceneResults solve_penny_gap(const Parameters &parameters, TimerOutput &timer)
   {
-    const std::filesystem::path directory(parameters.output.directory);
-
-    TimerOutput     timer(log, TimerOutput::never, TimerOutput::wall_times);
     const double    c = parameters.geometry.gap_radius;
     const FaceLoad  load(parameters.load, c);
     PennyGapModel   model(parameters, timer);
     const Vector<double> u         = model.solve(load);
     const FaceLoad       reference = FaceLoad::unit_uniform();
+    const double         residual  = model.last_solve().relative_residual;
     const Vector<double> u_ref     = model.solve(reference);
 
     PennySceneResults results;
@@ -101,14 +99,23 @@ namespace penny
     }
     results.n_cells           = model.triangulation().n_active_cells();
     results.n_dofs            = model.dof_handler().n_dofs();
-    results.relative_residual = model.last_solve().relative_residual;
+    results.relative_residual = std::max(residual, model.last_solve().relative_residual);
+    results.condition_estimate = model.last_solve().condition_estimate;
 
     if (parameters.output.write_fields)
       {
         TimerOutput::Scope scope(timer, "output");
         const double largest = *std::max_element(parameters.j_integral.ring_radii.begin(), parameters.j_integral.ring_radii.end());
-        write_fields(model, u, RingWeight{crack_tip(parameters.geometry), largest * c}, directory);
+        write_fields(model, u, RingWeight{crack_tip(parameters.geometry), largest * c}, parameters.output.directory);
       }
+    return results;
+  }
+
+  PennySceneResults run_penny_scene(const Parameters &parameters, std::ostream &log)
+  {
+    const std::filesystem::path directory(parameters.output.directory);
+    TimerOutput                 timer(log, TimerOutput::never, TimerOutput::wall_times);
+    const PennySceneResults     results = solve_penny_gap(parameters, timer);
 
     write_ring_table(log, results, ' ');
     if (results.rings.front().signed_stress_intensity_factor < 0)

@@ -5,6 +5,8 @@
 
 #include "parameters.h"
 
+#include <deal.II/base/timer.h>
+
 #include <ostream>
 #include <vector>
 
@@ -26,8 +28,15 @@ namespace penny
     double                  gap_volume, exact_gap_volume;               // both faces (m^3)
     unsigned int            n_cells;
     unsigned int            n_dofs;
-    double                  relative_residual;
+    double                  relative_residual;  // the larger of the two solves
+    double                  condition_estimate; // CG's estimate; 0 for the direct solver
   };
+
+  // The computation of the scene: solve, J-integrals, closed forms, and the
+  // fields when the parameters ask for them.
+  PennySceneResults solve_penny_gap(const Parameters &parameters, dealii::TimerOutput &timer);
+
+  // solve_penny_gap, then the table printed and the result files written.
 
   PennySceneResults run_penny_scene(const Parameters &parameters, std::ostream &log);
 } // namespace penny

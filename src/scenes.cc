@@ -3,6 +3,7 @@
 #include "adhesion_scenes.h"
 #include "output_files.h"
 #include "penny_scene.h"
+#include "stability_scene.h"
 
 namespace penny
 {
@@ -23,6 +24,8 @@ namespace penny
       run_gap_tension_curve_scene(parameters, log);
     else if (parameters.scene == "adhesive-equilibrium")
       run_adhesive_equilibrium_scene(parameters, log);
+    else if (parameters.scene == "stability")
+      run_stability_scene(parameters, log);
     else
       throw InputError("Scene = '" + parameters.scene + "' has no implementation");
 
