@@ -304,6 +304,39 @@ namespace penny
     prm.leave_subsection();
   }
 
+  void ConvergenceParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Convergence");
+    prm.declare_entry("Strategy", "tip-grading", Selection("uniform-h|tip-grading|degree|domain-size"),
+                      "The sequence of the convergence scene: uniform-h, one more global refinement "
+                      "per cycle of the scene's mesh; tip-grading, 'Tip levels step' more tip levels per "
+                      "cycle from 'First tip levels'; degree, degree 1 to 4 on the scene's mesh; "
+                      "domain-size, R/c = H/c from 10 to 1e4 at the scene's near-tip mesh.");
+    prm.declare_entry("Cycles", "4", Integer(1, 30), "Number of discretisations. Units: none.");
+    prm.declare_entry("First tip levels", "4", Integer(0, 40), "tip-grading: levels of cycle 0. Units: none.");
+    prm.declare_entry("Tip levels step", "4", Integer(1, 20), "tip-grading: levels added per cycle. Units: none.");
+    prm.leave_subsection();
+  }
+
+  void ConvergenceParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Convergence");
+    const std::string name = prm.get("Strategy");
+    strategy         = name == "uniform-h"   ? Strategy::uniform_h :
+                       name == "tip-grading" ? Strategy::tip_grading :
+                       name == "degree"      ? Strategy::degree :
+                                               Strategy::domain_size;
+    cycles           = prm.get_integer("Cycles");
+    first_tip_levels = prm.get_integer("First tip levels");
+    tip_levels_step  = prm.get_integer("Tip levels step");
+    prm.leave_subsection();
+    if (strategy == Strategy::degree)
+      require(cycles <= 4, "Convergence/Cycles", cycles, "[1, 4] for Strategy = degree");
+    if (strategy == Strategy::tip_grading)
+      require(first_tip_levels + (cycles - 1) * tip_levels_step <= 40, "Convergence/Cycles", cycles,
+              "[1, 1 + (40 - First tip levels)/Tip levels step]");
+  }
+
   void StabilityParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Stability");
@@ -324,7 +357,7 @@ namespace penny
   {
     prm.declare_entry("Scene", "penny-gap",
                       Selection("penny-gap|gap-size-adhesionless|adhesive-minimum|gap-tension-curve|"
-                                "adhesive-equilibrium|stability"),
+                                "adhesive-equilibrium|stability|convergence"),
                       "penny-gap: one FE solve of the load in 'Load', K_I from J-integrals (and signed "
                       "K_I) on every ring beside Sneddon's closed form, face opening and gap volume. "
                       "gap-size-adhesionless: the gap radius c where the FE K_I of the parabola (P, a) "
@@ -332,7 +365,8 @@ namespace penny
                       "K_I = K_Ic for the summit radius R_p, giving psi and c_min. gap-tension-curve: "
                       "p_hat(c_hat) from FE. adhesive-equilibrium: the FE gap radius on the stable "
                       "branch for the peak tension P. The c-searches keep R/c and H/c of 'Geometry'. "
-                      "stability: stiff and extreme cases around these parameters in one table.");
+                      "stability: stiff and extreme cases around these parameters in one table. "
+                      "convergence: this scene over the sequence of discretisations in 'Convergence'.");
     GeometryParameters::declare(prm);
     MaterialParameters::declare(prm);
     LoadParameters::declare(prm);
@@ -343,6 +377,7 @@ namespace penny
     JIntegralParameters::declare(prm);
     OutputParameters::declare(prm);
     StabilityParameters::declare(prm);
+    ConvergenceParameters::declare(prm);
   }
 
   void Parameters::parse(ParameterHandler &prm)
@@ -358,6 +393,7 @@ namespace penny
     j_integral.parse(prm);
     output.parse(prm);
     stability.parse(prm);
+    convergence.parse(prm);
 
     const double c          = geometry.gap_radius;
     const double room       = std::min(geometry.domain_height, geometry.domain_radius - c);

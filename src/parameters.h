@@ -71,6 +71,23 @@ namespace penny
     void        parse(dealii::ParameterHandler &prm);
   };
 
+  struct ConvergenceParameters
+  {
+    enum class Strategy
+    {
+      uniform_h,
+      tip_grading,
+      degree,
+      domain_size
+    };
+    Strategy     strategy;
+    unsigned int cycles;
+    unsigned int first_tip_levels, tip_levels_step;
+
+    static void declare(dealii::ParameterHandler &prm);
+    void        parse(dealii::ParameterHandler &prm);
+  };
+
   struct StabilityParameters
   {
     double target_accuracy; // relative K_I error a stability case must reach
@@ -152,6 +169,7 @@ namespace penny
     JIntegralParameters     j_integral;
     OutputParameters        output;
     StabilityParameters     stability;
+    ConvergenceParameters   convergence;
 
     static void declare(dealii::ParameterHandler &prm);
     void        parse(dealii::ParameterHandler &prm);

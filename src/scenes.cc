@@ -1,6 +1,7 @@
 #include "scenes.h"
 
 #include "adhesion_scenes.h"
+#include "convergence_scene.h"
 #include "output_files.h"
 #include "penny_scene.h"
 #include "stability_scene.h"
@@ -26,6 +27,8 @@ namespace penny
       run_adhesive_equilibrium_scene(parameters, log);
     else if (parameters.scene == "stability")
       run_stability_scene(parameters, log);
+    else if (parameters.scene == "convergence")
+      run_convergence_scene(parameters, log);
     else
       throw InputError("Scene = '" + parameters.scene + "' has no implementation");
 
