@@ -25,39 +25,34 @@ namespace penny
   }
 
   // The ring used for derived quantities is the last one listed.
-  double GapFamily::parabolic_stress_intensity_factor(const double c, const double P, const double a)
+  GapFamily::SifsWithReference GapFamily::solve_with_reference(const double c, const FaceLoad &load)
   {
     const Parameters parameters = scaled_to(c);
-    LoadParameters   parabola   = parameters.load;
-    parabola.type               = LoadParameters::Type::parabolic;
-    parabola.peak_tension       = P;
-    parabola.tension_radius     = a;
-    const FaceLoad load(parabola, c);
-    const FaceLoad reference = FaceLoad::unit_uniform();
+    const FaceLoad   reference  = FaceLoad::unit_uniform();
 
     PennyGapModel        model(parameters, timer);
     const Vector<double> u     = model.solve(load);
     const Vector<double> u_ref = model.solve(reference);
     solves += 2;
     TimerOutput::Scope scope(timer, "J-integral");
-    return JIntegral(model).signed_stress_intensity_factor(
-      u, load, u_ref, reference, parameters.j_integral.ring_radii.back() * c);
+    const JIntegral    j_integral(model);
+    const double       rho = parameters.j_integral.ring_radii.back() * c;
+    return {j_integral.stress_intensity_factor(u_ref, reference, rho),
+            j_integral.signed_stress_intensity_factor(u, load, u_ref, reference, rho)};
+  }
+
+  double GapFamily::parabolic_stress_intensity_factor(const double c, const double P, const double a)
+  {
+    LoadParameters parabola = base.load;
+    parabola.type           = LoadParameters::Type::parabolic;
+    parabola.peak_tension   = P;
+    parabola.tension_radius = a;
+    return solve_with_reference(c, FaceLoad(parabola, c)).load;
   }
 
   UnitLoadSifs GapFamily::unit_load_sifs(const double c)
   {
-    const Parameters parameters = scaled_to(c);
-    const FaceLoad   uniform    = FaceLoad::unit_uniform();
-    const FaceLoad   quadratic  = FaceLoad::unit_quadratic();
-
-    PennyGapModel        model(parameters, timer);
-    const Vector<double> u_uniform   = model.solve(uniform);
-    const Vector<double> u_quadratic = model.solve(quadratic);
-    solves += 2;
-    TimerOutput::Scope scope(timer, "J-integral");
-    const JIntegral    j_integral(model);
-    const double       rho = parameters.j_integral.ring_radii.back() * c;
-    return {j_integral.stress_intensity_factor(u_uniform, uniform, rho),
-            j_integral.signed_stress_intensity_factor(u_quadratic, quadratic, u_uniform, uniform, rho)};
+    const SifsWithReference K = solve_with_reference(c, FaceLoad::unit_quadratic());
+    return {K.reference, K.load};
   }
 } // namespace penny

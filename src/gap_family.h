@@ -4,6 +4,7 @@
 // and minimisers over c call it; every evaluation is a full FE solve.
 #pragma once
 
+#include "face_load.h"
 #include "parameters.h"
 
 #include <deal.II/base/timer.h>
@@ -35,6 +36,15 @@ namespace penny
 
   private:
     Parameters scaled_to(double c) const;
+
+    // |K_I| of unit pressure (the reference) and the signed K_I of `load`,
+    // both from one factorisation of the model built for radius c.
+    struct SifsWithReference
+    {
+      double reference;
+      double load;
+    };
+    SifsWithReference solve_with_reference(double c, const FaceLoad &load);
 
     const Parameters     base;
     dealii::TimerOutput &timer;
