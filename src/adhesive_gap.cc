@@ -12,14 +12,17 @@ namespace penny
   {
     const double sqrt_pi = std::sqrt(M_PI);
 
-    // Bracketing root of f on [lo, hi] (TOMS 748, Brent's method refined), to
-    // about 1e-12 relative in c, above the rounding noise of the FE K_I.
+    // Bits of c a root is found to: about 1e-12 relative for FE functions,
+    // above the rounding noise of the FE K_I; full precision for closed forms.
+    constexpr int fe_root_bits = 40, closed_form_root_bits = 52;
+
+    // Bracketing root of f on [lo, hi] (TOMS 748, Brent's method refined).
     template <typename F>
-    double bracketed_root(F &&f, const double lo, const double hi, const double f_lo, const double f_hi)
+    double bracketed_root(F &&f, const double lo, const double hi, const double f_lo, const double f_hi, const int bits)
     {
       std::uintmax_t iterations = 100;
       const auto     bracket =
-        boost::math::tools::toms748_solve(f, lo, hi, f_lo, f_hi, boost::math::tools::eps_tolerance<double>(40), iterations);
+        boost::math::tools::toms748_solve(f, lo, hi, f_lo, f_hi, boost::math::tools::eps_tolerance<double>(bits), iterations);
       if (iterations >= 100)
         throw std::runtime_error("root finder: no convergence in 100 iterations");
       return 0.5 * (bracket.first + bracket.second);
@@ -27,7 +30,7 @@ namespace penny
 
     // Widens [lo, hi] geometrically until f changes sign; f(lo) must be > 0.
     template <typename F>
-    double root_above(F &&f, double lo, double f_lo)
+    double root_above(F &&f, double lo, double f_lo, const int bits = fe_root_bits)
     {
       if (!(f_lo > 0))
         throw std::runtime_error("root finder: the lower bracket end has no positive value");
@@ -40,7 +43,7 @@ namespace penny
           f_lo = f_hi;
           hi *= 2;
         }
-      return bracketed_root(f, lo, hi, f_lo, f_hi);
+      return bracketed_root(f, lo, hi, f_lo, f_hi, bits);
     }
   } // namespace
 
@@ -58,7 +61,7 @@ namespace penny
     if (P == p0)
       return c_min;
     const auto f = [&](const double c) { return P - adhesive_tension(c, R_p, K_Ic); };
-    return root_above(f, c_min, f(c_min));
+    return root_above(f, c_min, f(c_min), closed_form_root_bits);
   }
 
   double adhesion_length(const double R_p, const double K_Ic)

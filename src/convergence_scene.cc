@@ -96,6 +96,7 @@ namespace penny
           row.wall_time += seconds;
         Utilities::System::MemoryStats memory;
         Utilities::System::get_memory_stats(memory);
+        const double peak_memory = Utilities::MPI::max(memory.VmHWM / 1024., MPI_COMM_WORLD); // of the largest rank
 
         table << k << ',' << setting << ',' << row.n_cells << ',' << row.n_dofs;
         for (const double K : row.stress_intensity_factors)
@@ -103,8 +104,8 @@ namespace penny
         table << ',' << row.error << ',' << (rows.empty() ? std::string("") : Utilities::to_string(row.rate));
         for (const auto &phase : phases)
           table << ',' << (times.count(phase) ? times.at(phase) : 0.);
-        table << ',' << row.wall_time << ',' << memory.VmHWM / 1024. << ','
-              << (cycle.linear_solver.type == LinearSolverParameters::Type::direct ? "UMFPACK" : "CG+AMG") << '\n';
+        table << ',' << row.wall_time << ',' << peak_memory << ','
+              << solver_name(cycle.linear_solver) << '\n';
         log << std::setw(3) << k << "  " << setting_name(sequence.strategy) << " " << std::setw(8) << setting
             << "  DoFs " << std::setw(8) << row.n_dofs << "  error " << std::scientific << std::setprecision(3)
             << row.error << "  rate " << std::defaultfloat << std::setprecision(3) << row.rate << "  wall "

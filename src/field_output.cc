@@ -63,8 +63,21 @@ namespace penny
     };
   } // namespace
 
+  namespace
+  {
+    // Every rank writes its cells into one file (MPI I/O), renamed into place by rank 0.
+    void write_vtu_atomically(const DataOut<2> &data_out, const std::filesystem::path &file, const MPI_Comm comm)
+    {
+      const std::string partial = file.string() + ".partial";
+      data_out.write_vtu_in_parallel(partial, comm);
+      if (Utilities::MPI::this_mpi_process(comm) == 0)
+        std::filesystem::rename(partial, file);
+      MPI_Barrier(comm);
+    }
+  } // namespace
+
   void write_fields(const PennyGapModel         &model,
-                    const Vector<double>        &displacement,
+                    const DisplacementVector    &displacement,
                     const RingWeight            &ring,
                     const std::filesystem::path &directory)
   {
@@ -79,7 +92,7 @@ namespace penny
     data_out.add_data_vector(displacement, stresses);
     data_out.build_patches(model.finite_element().degree);
 
-    write_atomically(directory / "solution.vtu", [&](std::ostream &out) { data_out.write_vtu(out); });
+    write_vtu_atomically(data_out, directory / "solution.vtu", model.triangulation().get_communicator());
     write_atomically(directory / "solution.pvd", [&](std::ostream &out) {
       DataOutBase::write_pvd_record(out, {{0., "solution.vtu"}});
     });

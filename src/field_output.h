@@ -11,7 +11,7 @@
 namespace penny
 {
   void write_fields(const PennyGapModel          &model,
-                    const dealii::Vector<double> &displacement,
+                    const DisplacementVector     &displacement,
                     const RingWeight             &ring,
                     const std::filesystem::path  &directory);
 } // namespace penny

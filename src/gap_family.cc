@@ -31,8 +31,8 @@ namespace penny
     const FaceLoad   reference  = FaceLoad::unit_uniform();
 
     PennyGapModel        model(parameters, timer);
-    const Vector<double> u     = model.solve(load);
-    const Vector<double> u_ref = model.solve(reference);
+    const DisplacementVector u     = model.solve(load);
+    const DisplacementVector u_ref = model.solve(reference);
     solves += 2;
     TimerOutput::Scope scope(timer, "J-integral");
     const JIntegral    j_integral(model);

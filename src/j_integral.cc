@@ -3,6 +3,7 @@
 #include "axisymmetric_elasticity.h"
 #include "gap_mesh.h"
 
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
@@ -26,20 +27,20 @@ namespace penny
     : model(model)
   {}
 
-  double JIntegral::energy_release_rate(const Vector<double> &u, const FaceLoad &load, const double rho) const
+  double JIntegral::energy_release_rate(const DisplacementVector &u, const FaceLoad &load, const double rho) const
   {
     return bilinear(u, load, u, load, rho);
   }
 
-  double JIntegral::stress_intensity_factor(const Vector<double> &u, const FaceLoad &load, const double rho) const
+  double JIntegral::stress_intensity_factor(const DisplacementVector &u, const FaceLoad &load, const double rho) const
   {
     const double G = energy_release_rate(u, load, rho);
     return std::sqrt(model.parameters().material.plane_strain_modulus() * std::max(G, 0.));
   }
 
-  double JIntegral::signed_stress_intensity_factor(const Vector<double> &u,
+  double JIntegral::signed_stress_intensity_factor(const DisplacementVector &u,
                                                    const FaceLoad       &load,
-                                                   const Vector<double> &u_ref,
+                                                   const DisplacementVector &u_ref,
                                                    const FaceLoad       &load_ref,
                                                    const double          rho) const
   {
@@ -52,9 +53,9 @@ namespace penny
 
   // Polarised integrands: sigma(u)_ij d_r v_i is replaced by the symmetric
   // mean of the (u, v) and (v, u) products, W by sigma(u):e(v)/2.
-  double JIntegral::bilinear(const Vector<double> &u,
+  double JIntegral::bilinear(const DisplacementVector &u,
                              const FaceLoad       &load_u,
-                             const Vector<double> &v,
+                             const DisplacementVector &v,
                              const FaceLoad       &load_v,
                              const double          rho) const
   {
@@ -78,7 +79,7 @@ namespace penny
     double area_term = 0, hoop_term = 0, face_term = 0;
     for (const auto &cell : model.dof_handler().active_cell_iterators())
       {
-        if (cell->center().distance(q.tip) > rho + cell->diameter())
+        if (!cell->is_locally_owned() || cell->center().distance(q.tip) > rho + cell->diameter())
           continue;
         fe_values.reinit(cell);
         fe_values[displacement].get_function_gradients(u, grad_u);
@@ -123,7 +124,8 @@ namespace penny
                 }
             }
       }
-    const double result = 2 / c * (area_term + hoop_term - face_term);
+    const double result =
+      2 / c * Utilities::MPI::sum(area_term + hoop_term - face_term, model.triangulation().get_communicator());
     if (!std::isfinite(result))
       throw std::runtime_error("J-integral: the ring of radius " + std::to_string(rho / c) + " c gives NaN or Inf");
     return result;

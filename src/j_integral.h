@@ -32,24 +32,24 @@ namespace penny
     explicit JIntegral(const PennyGapModel &model);
 
     // B(u, v) over the ring of radius rho (m), u and v loaded by load_u, load_v.
-    double bilinear(const dealii::Vector<double> &u,
+    double bilinear(const DisplacementVector &u,
                     const FaceLoad               &load_u,
-                    const dealii::Vector<double> &v,
+                    const DisplacementVector     &v,
                     const FaceLoad               &load_v,
                     double                        rho) const;
 
     // G = B(u, u) (J/m^2).
-    double energy_release_rate(const dealii::Vector<double> &u, const FaceLoad &load, double rho) const;
+    double energy_release_rate(const DisplacementVector     &u, const FaceLoad &load, double rho) const;
 
     // |K_I| = sqrt(E' G) (Pa m^1/2).
-    double stress_intensity_factor(const dealii::Vector<double> &u, const FaceLoad &load, double rho) const;
+    double stress_intensity_factor(const DisplacementVector     &u, const FaceLoad &load, double rho) const;
 
     // Signed K_I = E' B(u, u_ref)/K_ref, with a reference solution u_ref on the
     // same mesh whose K_ref = sqrt(E' B(u_ref, u_ref)) is known to be positive
     // (a tension opening the gap, e.g. uniform pressure).
-    double signed_stress_intensity_factor(const dealii::Vector<double> &u,
+    double signed_stress_intensity_factor(const DisplacementVector     &u,
                                           const FaceLoad               &load,
-                                          const dealii::Vector<double> &u_ref,
+                                          const DisplacementVector     &u_ref,
                                           const FaceLoad               &load_ref,
                                           double                        rho) const;
 

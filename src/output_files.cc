@@ -2,6 +2,8 @@
 
 #include "parameters.h"
 
+#include <deal.II/base/mpi.h>
+
 #include <fstream>
 #include <unistd.h>
 
@@ -17,6 +19,8 @@ namespace penny
 
   void write_atomically(const std::filesystem::path &file, const std::function<void(std::ostream &)> &write)
   {
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) != 0)
+      return;
     const std::filesystem::path partial = file.string() + ".partial";
     {
       std::ofstream out(partial);

@@ -13,5 +13,6 @@ namespace penny
   // it cannot be created or written.
   void prepare_output_directory(const std::filesystem::path &directory);
 
+  // On MPI rank 0 only: the other ranks hold the same results.
   void write_atomically(const std::filesystem::path &file, const std::function<void(std::ostream &)> &write);
 } // namespace penny

@@ -1,9 +1,11 @@
 #include "parameters.h"
 
 #include <deal.II/base/exceptions.h>
+#include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <limits>
 #include <sstream>
@@ -166,10 +168,14 @@ namespace penny
   void AdhesionParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Adhesion");
+    prm.declare_entry("Toughness given by", "K_Ic", Selection("K_Ic|G_c"),
+                      "K_Ic: 'Critical stress intensity K_Ic' as given; G_c: K_Ic = sqrt(E' G_c) "
+                      "from 'Work of adhesion G_c' and the Material section.");
     prm.declare_entry("Critical stress intensity K_Ic", "1.28e6", Double(0),
-                      "Toughness of the interface: an adhesive gap is in equilibrium at K_I = K_Ic "
-                      "(K_Ic = sqrt(E' G_c)). The load's summit radius R_p sets the parabola. "
-                      "Units: Pa m^1/2.");
+                      "Toughness of the interface: an adhesive gap is in equilibrium at K_I = K_Ic. "
+                      "The load's summit radius R_p sets the parabola. Units: Pa m^1/2.");
+    prm.declare_entry("Work of adhesion G_c", "0.1", Double(0),
+                      "Interface energy per area, used when the toughness is given by G_c. Units: J/m^2.");
     prm.declare_entry("Smallest c_hat", "0.3", Double(0),
                       "Gap-tension curve: smallest c/c_min. Units: none.");
     prm.declare_entry("Largest c_hat", "4", Double(0),
@@ -179,10 +185,17 @@ namespace penny
     prm.leave_subsection();
   }
 
-  void AdhesionParameters::parse(ParameterHandler &prm)
+  void AdhesionParameters::parse(ParameterHandler &prm, const MaterialParameters &material)
   {
     prm.enter_subsection("Adhesion");
-    critical_stress_intensity = prm.get_double("Critical stress intensity K_Ic");
+    if (prm.get("Toughness given by") == "K_Ic")
+      critical_stress_intensity = prm.get_double("Critical stress intensity K_Ic");
+    else
+      {
+        const double G_c = prm.get_double("Work of adhesion G_c");
+        require(G_c > 0, "Adhesion/Work of adhesion G_c", G_c, "(0, inf)");
+        critical_stress_intensity = std::sqrt(material.plane_strain_modulus() * G_c);
+      }
     smallest_c_hat            = prm.get_double("Smallest c_hat");
     largest_c_hat             = prm.get_double("Largest c_hat");
     n_curve_points            = prm.get_integer("Number of points");
@@ -247,8 +260,9 @@ namespace penny
   {
     prm.enter_subsection("Linear solver");
     prm.declare_entry("Type", "direct", Selection("direct|cg-amg"),
-                      "direct: sparse LU (UMFPACK). cg-amg: conjugate gradients preconditioned "
-                      "with Trilinos' algebraic multigrid, for large meshes.");
+                      "direct: sparse LU, UMFPACK on one MPI rank and MUMPS (Trilinos Amesos) on "
+                      "several. cg-amg: conjugate gradients preconditioned with Trilinos' algebraic "
+                      "multigrid, for large meshes.");
     prm.declare_entry("Tolerance", "1e-9", Double(0, 1),
                       "Relative residual |A u - b|/|b| the iterative solver must reach; a direct "
                       "solve that misses it is an error too. Units: none.");
@@ -265,6 +279,13 @@ namespace penny
     max_iterations = prm.get_integer("Maximum iterations");
     prm.leave_subsection();
     require(tolerance > 0, "Linear solver/Tolerance", tolerance, "(0, 1]");
+  }
+
+  std::string solver_name(const LinearSolverParameters &solver)
+  {
+    if (solver.type == LinearSolverParameters::Type::cg_amg)
+      return "CG + AMG";
+    return dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) == 1 ? "UMFPACK" : "MUMPS";
   }
 
   void JIntegralParameters::declare(ParameterHandler &prm)
@@ -353,11 +374,136 @@ namespace penny
     prm.leave_subsection();
   }
 
+  void RoughnessParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Roughness");
+    prm.declare_entry("Spectrum", "power-law", Selection("power-law|file"),
+                      "Isotropic height PSD C(q): the paper's power law (H/2pi) (h0/q0)^2 (q/q0)^(-2(H+1)) "
+                      "on q0 <= q <= zeta q0, or the table in 'Spectrum file'.");
+    prm.declare_entry("Hurst exponent H", "0.75", Double(0, 1), "Open range (0, 1). Units: none.");
+    prm.declare_entry("Long-wavelength cut-off q0", "6283.185307179586", Double(0),
+                      "Smallest wavenumber of the power law, q0 = 2 pi/lambda0. Units: 1/m.");
+    prm.declare_entry("Magnification zeta", "1000", Double(1),
+                      "q1/q0, the bandwidth of the power law; above 1. Units: none.");
+    prm.declare_entry("Amplitude given by", "h0/lambda0", Selection("h0/lambda0|rms height"),
+                      "h0/lambda0: h0 = (h0/lambda0) 2 pi/q0; rms height: h0 such that sqrt(m0) is the "
+                      "'Rms height'.");
+    prm.declare_entry("Amplitude h0/lambda0", "0.01", Double(0), "Units: none.");
+    prm.declare_entry("Rms height", "1e-6", Double(0), "sqrt(m0) of the power law. Units: m.");
+    prm.declare_entry("Spectrum file", "psd.txt", FileName(),
+                      "Two columns q (1/m, increasing) and C(q) (m^4), '#' comments; log-log linear between "
+                      "rows (relative paths start at the parameter file's folder).");
+    prm.leave_subsection();
+  }
+
+  void RoughnessParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Roughness");
+    spectrum      = prm.get("Spectrum") == "file" ? Spectrum::file : Spectrum::power_law;
+    hurst         = prm.get_double("Hurst exponent H");
+    q0            = prm.get_double("Long-wavelength cut-off q0");
+    zeta          = prm.get_double("Magnification zeta");
+    spectrum_file = prm.get("Spectrum file");
+    const bool   from_ratio = prm.get("Amplitude given by") == "h0/lambda0";
+    const double ratio = prm.get_double("Amplitude h0/lambda0"), rms = prm.get_double("Rms height");
+    prm.leave_subsection();
+    require(hurst > 0 && hurst < 1, "Roughness/Hurst exponent H", hurst, "(0, 1)");
+    require(q0 > 0, "Roughness/Long-wavelength cut-off q0", q0, "(0, inf)");
+    require(zeta > 1, "Roughness/Magnification zeta", zeta, "(1, inf)");
+    require(from_ratio ? ratio > 0 : rms > 0, from_ratio ? "Roughness/Amplitude h0/lambda0" : "Roughness/Rms height",
+            from_ratio ? ratio : rms, "(0, inf)");
+    // m0 = h0^2 (1 - zeta^(-2H))/2 for the power law.
+    amplitude = from_ratio ? ratio * 2 * M_PI / q0 : rms * std::sqrt(2 / (1 - std::pow(zeta, -2 * hurst)));
+  }
+
+  void AreaLoadParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Area-load");
+    prm.declare_entry("Convention", "paper", Selection("paper|consistent"),
+                      "paper: the paper's normalisations, prefactor 3 pi R_p eta sqrt(V) = sqrt(2 pi) and "
+                      "p0/sqrt(V) = zeta^theta, theta = (2/5)(2H - 1). consistent: V, eta, R_p and p0 from the "
+                      "moments of the Roughness spectrum (each H and zeta below replacing its own), the "
+                      "Material and the Adhesion sections.");
+    prm.declare_entry("Smallest mean pressure", "0", Double(-max_double, max_double),
+                      "First p_bar/sqrt(V) of the curves (compression positive). Units: sqrt(V).");
+    prm.declare_entry("Largest mean pressure", "3", Double(-max_double, max_double),
+                      "Last p_bar/sqrt(V). Units: sqrt(V).");
+    prm.declare_entry("Number of points", "61", Integer(2, 100000),
+                      "Points of every curve, evenly spaced: mean pressures, or p0/sqrt(V) in "
+                      "zero-load-gap-area. Units: none.");
+    prm.declare_entry("Hurst exponents", "0.75, 0.5, 0.25", List(Double(0, 1), 1),
+                      "area-load: one panel per H, open range (0, 1). Units: none.");
+    prm.declare_entry("Magnifications", "1, 10, 100, 1000, 10000", List(Double(1), 1),
+                      "area-load: one curve per zeta >= 1 (> 1 in the consistent convention). Units: none.");
+    prm.declare_entry("Largest p0/sqrt(V)", "5", Double(0),
+                      "zero-load-gap-area: p0/sqrt(V) runs from 0 to this value. Units: none.");
+    prm.declare_entry("p0/sqrt(V)", "1", Double(0),
+                      "fe-gap-area: adhesion of the gap population; sqrt(V) = p0/this, with p0 from Load/Summit "
+                      "radius R_p and the Adhesion section. Units: none.");
+    prm.declare_entry("Tabulated tensions", "20", Integer(3, 200),
+                      "fe-gap-area: FE gap radii at this many peak tensions P = p0 + t^2 sqrt(V), Chebyshev "
+                      "points in t. Units: none.");
+    prm.declare_entry("Fit magnifications", "1e12, 1e16", List(Double(1), 2, 2),
+                      "magnification-scaling: the zeta range of the least-squares fit of theta. Units: none.");
+    prm.leave_subsection();
+  }
+
+  void AreaLoadParameters::parse(ParameterHandler &prm)
+  {
+    const auto doubles = [&](const std::string &entry) {
+      return dealii::Utilities::string_to_double(dealii::Utilities::split_string_list(prm.get(entry)));
+    };
+    prm.enter_subsection("Area-load");
+    convention_is_paper    = prm.get("Convention") == "paper";
+    smallest_mean_pressure = prm.get_double("Smallest mean pressure");
+    largest_mean_pressure  = prm.get_double("Largest mean pressure");
+    n_points               = prm.get_integer("Number of points");
+    hurst_exponents        = doubles("Hurst exponents");
+    magnifications         = doubles("Magnifications");
+    largest_adhesion_ratio = prm.get_double("Largest p0/sqrt(V)");
+    adhesion_ratio         = prm.get_double("p0/sqrt(V)");
+    n_tabulated_tensions   = prm.get_integer("Tabulated tensions");
+    const auto fit         = doubles("Fit magnifications");
+    first_fit_magnification = fit[0];
+    last_fit_magnification  = fit[1];
+    prm.leave_subsection();
+    require(largest_mean_pressure > smallest_mean_pressure, "Area-load/Largest mean pressure", largest_mean_pressure,
+            "(Smallest mean pressure, inf)");
+    for (const double H : hurst_exponents)
+      require(H > 0 && H < 1, "Area-load/Hurst exponents", H, "(0, 1)");
+    for (const double zeta : magnifications)
+      require(convention_is_paper ? zeta >= 1 : zeta > 1, "Area-load/Magnifications", zeta,
+              convention_is_paper ? "[1, inf)" : "(1, inf) in the consistent convention");
+    require(adhesion_ratio > 0, "Area-load/p0/sqrt(V)", adhesion_ratio, "(0, inf)");
+    require(last_fit_magnification > first_fit_magnification && first_fit_magnification > 1,
+            "Area-load/Fit magnifications", last_fit_magnification, "(first > 1, inf)");
+  }
+
+  void SinusoidParameters::declare(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Sinusoid");
+    prm.declare_entry("Johnson parameters alpha", "0, 0.2, 0.4, 0.6", List(Double(0), 1),
+                      "alpha^2 = 2 lambda dgamma/(pi^2 E* h^2) of Johnson's adhesive 1D sinusoid, one curve "
+                      "each. Units: none.");
+    prm.declare_entry("Number of points", "199", Integer(2, 100000),
+                      "Contact semi-widths a/lambda, evenly spaced inside (0, 1/2). Units: none.");
+    prm.leave_subsection();
+  }
+
+  void SinusoidParameters::parse(ParameterHandler &prm)
+  {
+    prm.enter_subsection("Sinusoid");
+    alphas   = dealii::Utilities::string_to_double(dealii::Utilities::split_string_list(prm.get("Johnson parameters alpha")));
+    n_points = prm.get_integer("Number of points");
+    prm.leave_subsection();
+  }
+
   void Parameters::declare(ParameterHandler &prm)
   {
     prm.declare_entry("Scene", "penny-gap",
                       Selection("penny-gap|gap-size-adhesionless|adhesive-minimum|gap-tension-curve|"
-                                "adhesive-equilibrium|stability|convergence"),
+                                "adhesive-equilibrium|stability|convergence|sinusoid-contact|zero-load-gap-area|"
+                                "area-load|rough-surface|magnification-scaling|fe-gap-area"),
                       "penny-gap: one FE solve of the load in 'Load', K_I from J-integrals (and signed "
                       "K_I) on every ring beside Sneddon's closed form, face opening and gap volume. "
                       "gap-size-adhesionless: the gap radius c where the FE K_I of the parabola (P, a) "
@@ -366,7 +512,14 @@ namespace penny
                       "p_hat(c_hat) from FE. adhesive-equilibrium: the FE gap radius on the stable "
                       "branch for the peak tension P. The c-searches keep R/c and H/c of 'Geometry'. "
                       "stability: stiff and extreme cases around these parameters in one table. "
-                      "convergence: this scene over the sequence of discretisations in 'Convergence'.");
+                      "convergence: this scene over the sequence of discretisations in 'Convergence'. "
+                      "Statistical layer, no FE: sinusoid-contact: Johnson's 1D sinusoid (paper Fig. 1); "
+                      "zero-load-gap-area: A_nc/A_0 at p_bar = 0 against p0/sqrt(V) (Fig. 3); area-load: "
+                      "A_nc/A_0 and A_c/A_0 against p_bar/sqrt(V) for each H and zeta (Figs. 4 and 5); "
+                      "rough-surface: moments, summit statistics and p0 of the Roughness spectrum in both "
+                      "conventions, and its area-load curve; magnification-scaling: theta fitted from the "
+                      "moments for each H. fe-gap-area: the area-load curve with the FE g, tabulated from "
+                      "FE solves, beside the closed-form g's.");
     GeometryParameters::declare(prm);
     MaterialParameters::declare(prm);
     LoadParameters::declare(prm);
@@ -378,6 +531,9 @@ namespace penny
     OutputParameters::declare(prm);
     StabilityParameters::declare(prm);
     ConvergenceParameters::declare(prm);
+    RoughnessParameters::declare(prm);
+    AreaLoadParameters::declare(prm);
+    SinusoidParameters::declare(prm);
   }
 
   void Parameters::parse(ParameterHandler &prm)
@@ -386,7 +542,7 @@ namespace penny
     geometry.parse(prm);
     material.parse(prm);
     load.parse(prm);
-    adhesion.parse(prm);
+    adhesion.parse(prm, material);
     mesh.parse(prm);
     finite_element.parse(prm);
     linear_solver.parse(prm);
@@ -394,6 +550,9 @@ namespace penny
     output.parse(prm);
     stability.parse(prm);
     convergence.parse(prm);
+    roughness.parse(prm);
+    area_load.parse(prm);
+    sinusoid.parse(prm);
 
     const double c          = geometry.gap_radius;
     const double room       = std::min(geometry.domain_height, geometry.domain_radius - c);
@@ -424,6 +583,14 @@ namespace penny
     if (mesh_path.is_relative())
       parameters.mesh.mesh_file =
         (std::filesystem::path(filename).parent_path() / mesh_path).lexically_normal().string();
+    const std::filesystem::path spectrum_path(parameters.roughness.spectrum_file);
+    if (spectrum_path.is_relative())
+      parameters.roughness.spectrum_file =
+        (std::filesystem::path(filename).parent_path() / spectrum_path).lexically_normal().string();
+    if (parameters.roughness.spectrum == RoughnessParameters::Spectrum::file &&
+        !std::filesystem::is_regular_file(parameters.roughness.spectrum_file))
+      throw InputError("Roughness/Spectrum file = '" + parameters.roughness.spectrum_file +
+                       "' does not exist (expected two columns q (1/m), C(q) (m^4))");
     if (parameters.mesh.generator == MeshParameters::Generator::gmsh &&
         !std::filesystem::is_regular_file(parameters.mesh.mesh_file))
       throw InputError("Mesh/Mesh file = '" + parameters.mesh.mesh_file +

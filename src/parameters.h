@@ -63,9 +63,53 @@ namespace penny
 
   struct AdhesionParameters
   {
-    double critical_stress_intensity; // K_Ic (Pa m^1/2)
+    double critical_stress_intensity; // K_Ic (Pa m^1/2), given or sqrt(E' G_c)
     double smallest_c_hat, largest_c_hat; // range of the gap-tension curve, c/c_min
     unsigned int n_curve_points;
+
+    static void declare(dealii::ParameterHandler &prm);
+    void        parse(dealii::ParameterHandler &prm, const MaterialParameters &material);
+  };
+
+  // The rough surface of the statistical layer: its height PSD.
+  struct RoughnessParameters
+  {
+    enum class Spectrum
+    {
+      power_law,
+      file
+    };
+    Spectrum    spectrum;
+    double      hurst;      // H
+    double      q0;         // long-wavelength cut-off (1/m)
+    double      zeta;       // magnification q1/q0
+    double      amplitude;  // h0 (m) of the power law
+    std::string spectrum_file;
+
+    static void declare(dealii::ParameterHandler &prm);
+    void        parse(dealii::ParameterHandler &prm);
+  };
+
+  // Area-load curves aggregated over the Gaussian field of pressure summits.
+  struct AreaLoadParameters
+  {
+    bool                convention_is_paper;
+    double              smallest_mean_pressure, largest_mean_pressure; // p_bar/sqrt(V)
+    unsigned int        n_points;
+    std::vector<double> hurst_exponents, magnifications;
+    double              largest_adhesion_ratio; // zero-load-gap-area: largest p0/sqrt(V)
+    double              adhesion_ratio;         // fe-gap-area: p0/sqrt(V)
+    unsigned int        n_tabulated_tensions;   // fe-gap-area: FE g at this many P
+    double              first_fit_magnification, last_fit_magnification;
+
+    static void declare(dealii::ParameterHandler &prm);
+    void        parse(dealii::ParameterHandler &prm);
+  };
+
+  struct SinusoidParameters
+  {
+    std::vector<double> alphas; // Johnson's adhesion parameters
+    unsigned int        n_points;
 
     static void declare(dealii::ParameterHandler &prm);
     void        parse(dealii::ParameterHandler &prm);
@@ -137,6 +181,9 @@ namespace penny
     void        parse(dealii::ParameterHandler &prm);
   };
 
+  // "UMFPACK" (one MPI rank), "MUMPS" (several) or "CG + AMG".
+  std::string solver_name(const LinearSolverParameters &solver);
+
   struct JIntegralParameters
   {
     std::vector<double> ring_radii; // in units of c
@@ -170,6 +217,9 @@ namespace penny
     OutputParameters        output;
     StabilityParameters     stability;
     ConvergenceParameters   convergence;
+    RoughnessParameters     roughness;
+    AreaLoadParameters      area_load;
+    SinusoidParameters      sinusoid;
 
     static void declare(dealii::ParameterHandler &prm);
     void        parse(dealii::ParameterHandler &prm);

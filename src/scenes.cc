@@ -1,6 +1,7 @@
 #include "scenes.h"
 
 #include "adhesion_scenes.h"
+#include "contact_scenes.h"
 #include "convergence_scene.h"
 #include "output_files.h"
 #include "penny_scene.h"
@@ -29,6 +30,18 @@ namespace penny
       run_stability_scene(parameters, log);
     else if (parameters.scene == "convergence")
       run_convergence_scene(parameters, log);
+    else if (parameters.scene == "sinusoid-contact")
+      run_sinusoid_contact_scene(parameters, log);
+    else if (parameters.scene == "zero-load-gap-area")
+      run_zero_load_gap_area_scene(parameters, log);
+    else if (parameters.scene == "area-load")
+      run_area_load_scene(parameters, log);
+    else if (parameters.scene == "rough-surface")
+      run_rough_surface_scene(parameters, log);
+    else if (parameters.scene == "magnification-scaling")
+      run_magnification_scaling_scene(parameters, log);
+    else if (parameters.scene == "fe-gap-area")
+      run_fe_gap_area_scene(parameters, log);
     else
       throw InputError("Scene = '" + parameters.scene + "' has no implementation");
 

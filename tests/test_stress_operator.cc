@@ -8,6 +8,7 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/numerics/vector_tools.h>
 
@@ -54,8 +55,13 @@ BOOST_AUTO_TEST_CASE(uniform_stress_state)
   const double mu     = parameters.material.lame_mu();
   const double a      = 1e-3;
   const double b      = -2 * lambda * a / (lambda + 2 * mu);
-  Vector<double> u(model.dof_handler().n_dofs());
-  VectorTools::interpolate(model.dof_handler(), UniformStrain(a, b), u);
+  const auto                   &dofs = model.dof_handler();
+  TrilinosWrappers::MPI::Vector owned(dofs.locally_owned_dofs(), MPI_COMM_WORLD);
+  VectorTools::interpolate(dofs, UniformStrain(a, b), owned);
+  IndexSet relevant;
+  DoFTools::extract_locally_relevant_dofs(dofs, relevant);
+  DisplacementVector u(dofs.locally_owned_dofs(), relevant, MPI_COMM_WORLD);
+  u = owned;
 
   const double      s_rr = lambda * (2 * a + b) + 2 * mu * a;
   const QGauss<2>   quadrature(3);

@@ -46,20 +46,26 @@ int main(int argc, char **argv)
       return 2;
     }
 
+  // Under mpirun every rank computes; rank 0 speaks.
+  const bool    speaks = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
+  std::ostream  silent(nullptr);
+  std::ostream &log = speaks ? std::cout : silent;
   try
     {
       dealii::ParameterHandler prm;
       const auto               parameters = penny::Parameters::read(argument, prm);
-      penny::run_scene(parameters, prm, std::cout);
+      penny::run_scene(parameters, prm, log);
     }
   catch (const penny::InputError &error)
     {
-      std::cerr << "penny: error: " << argument << ": " << error.what() << std::endl;
+      if (speaks)
+        std::cerr << "penny: error: " << argument << ": " << error.what() << std::endl;
       return 1;
     }
   catch (const std::exception &error)
     {
-      std::cerr << "penny: error: " << error.what() << std::endl;
+      if (speaks)
+        std::cerr << "penny: error: " << error.what() << std::endl;
       return 1;
     }
   return 0;
