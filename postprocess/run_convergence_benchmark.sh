@@ -5,12 +5,12 @@
 #   postprocess/run_convergence_benchmark.sh
 set -euo pipefail
 cd "$(dirname "$0")/.."
-for sequence in uniform-h tip-grading degree domain-size uniform-h-cg-amg degree-cg-amg; do
+for sequence in uniform-h tip-grading degree domain-size adaptive uniform-h-cg-amg degree-cg-amg; do
   echo "== $sequence"
   build/penny prms/convergence-$sequence.prm
 done
 /usr/bin/python3 postprocess/plot_convergence.py output/convergence/convergence \
-  output/convergence/uniform-h output/convergence/tip-grading output/convergence/degree \
+  output/convergence/uniform-h output/convergence/tip-grading output/convergence/degree output/convergence/adaptive \
   output/convergence/uniform-h-cg-amg output/convergence/degree-cg-amg
 
 # The largest meshes on 2 ranks: MUMPS takes UMFPACK's place, CG + AMG stays.

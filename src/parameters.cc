@@ -328,14 +328,19 @@ namespace penny
   void ConvergenceParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Convergence");
-    prm.declare_entry("Strategy", "tip-grading", Selection("uniform-h|tip-grading|degree|domain-size"),
+    prm.declare_entry("Strategy", "tip-grading", Selection("uniform-h|tip-grading|degree|domain-size|adaptive"),
                       "The sequence of the convergence scene: uniform-h, one more global refinement "
                       "per cycle of the scene's mesh; tip-grading, 'Tip levels step' more tip levels per "
                       "cycle from 'First tip levels'; degree, degree 1 to 4 on the scene's mesh; "
-                      "domain-size, R/c = H/c from 10 to 1e4 at the scene's near-tip mesh.");
+                      "domain-size, R/c = H/c from 10 to 1e4 at the scene's near-tip mesh; adaptive, from the "
+                      "mesh with 'First tip levels', each cycle refines the 'Refined fraction' of cells with the "
+                      "largest Kelly error indicators of the displacement.");
     prm.declare_entry("Cycles", "4", Integer(1, 30), "Number of discretisations. Units: none.");
     prm.declare_entry("First tip levels", "4", Integer(0, 40), "tip-grading: levels of cycle 0. Units: none.");
     prm.declare_entry("Tip levels step", "4", Integer(1, 20), "tip-grading: levels added per cycle. Units: none.");
+    prm.declare_entry("Refined fraction", "0.1", Double(0, 1),
+                      "adaptive: share of the cells, those with the largest Kelly indicators, refined per "
+                      "cycle. Open range (0, 1]. Units: none.");
     prm.leave_subsection();
   }
 
@@ -346,11 +351,14 @@ namespace penny
     strategy         = name == "uniform-h"   ? Strategy::uniform_h :
                        name == "tip-grading" ? Strategy::tip_grading :
                        name == "degree"      ? Strategy::degree :
-                                               Strategy::domain_size;
+                       name == "domain-size" ? Strategy::domain_size :
+                                               Strategy::adaptive;
     cycles           = prm.get_integer("Cycles");
     first_tip_levels = prm.get_integer("First tip levels");
     tip_levels_step  = prm.get_integer("Tip levels step");
+    refined_fraction = prm.get_double("Refined fraction");
     prm.leave_subsection();
+    require(refined_fraction > 0, "Convergence/Refined fraction", refined_fraction, "(0, 1]");
     if (strategy == Strategy::degree)
       require(cycles <= 4, "Convergence/Cycles", cycles, "[1, 4] for Strategy = degree");
     if (strategy == Strategy::tip_grading)

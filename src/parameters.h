@@ -122,11 +122,13 @@ namespace penny
       uniform_h,
       tip_grading,
       degree,
-      domain_size
+      domain_size,
+      adaptive
     };
     Strategy     strategy;
     unsigned int cycles;
     unsigned int first_tip_levels, tip_levels_step;
+    double       refined_fraction; // adaptive: share of cells refined per cycle
 
     static void declare(dealii::ParameterHandler &prm);
     void        parse(dealii::ParameterHandler &prm);

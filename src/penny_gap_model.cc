@@ -7,11 +7,13 @@
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/grid/grid_refinement.h>
 #include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/solver_cg.h>
 #include <deal.II/lac/solver_control.h>
 #include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/vector.h>
+#include <deal.II/numerics/error_estimator.h>
 #include <deal.II/numerics/vector_tools.h>
 
 #include <cmath>
@@ -41,11 +43,31 @@ namespace penny
     factorise();
   }
 
+  void PennyGapModel::refine_by_kelly(const DisplacementVector &u, const double fraction)
+  {
+    {
+      TimerOutput::Scope scope(timer, "mesh");
+      // Each rank estimates its own cells; the sum gives every rank all of them.
+      Vector<float> indicators(mesh.n_active_cells());
+      KellyErrorEstimator<2>::estimate(dofs, QGauss<1>(fe.degree + 1), {}, u, indicators, ComponentMask(), nullptr,
+                                       numbers::invalid_unsigned_int, mesh.locally_owned_subdomain());
+      Utilities::MPI::sum(indicators, mesh.get_communicator(), indicators);
+      GridRefinement::refine_and_coarsen_fixed_number(mesh, indicators, fraction, 0.);
+      mesh.execute_coarsening_and_refinement();
+    }
+    setup_system();
+    assemble_matrix();
+    factorise();
+  }
+
   // Hanging nodes of the locally refined mesh, u_r = 0 on the axis, u_z = 0 on
   // the ligament, and u = 0 on a clamped far boundary.
   void PennyGapModel::setup_system()
   {
     TimerOutput::Scope scope(timer, "setup");
+    // Solvers built on a previous matrix go before it does.
+    mumps.reset();
+    amg.clear();
     dofs.reinit(mesh);
     dofs.distribute_dofs(fe);
     owned = dofs.locally_owned_dofs();
@@ -67,7 +89,10 @@ namespace penny
     SparsityTools::distribute_sparsity_pattern(pattern, owned, mesh.get_communicator(), relevant);
     stiffness.reinit(owned, owned, pattern, mesh.get_communicator());
     if (prm.linear_solver.type == LinearSolverParameters::Type::direct && Utilities::MPI::n_mpi_processes(mesh.get_communicator()) == 1)
-      serial_sparsity.copy_from(pattern);
+      {
+        serial_stiffness.clear(); // releases the old pattern
+        serial_sparsity.copy_from(pattern);
+      }
   }
 
   // a(u, v) = int sigma(u):e(v) r dr dz, all four components (the 2 pi dropped).

@@ -55,6 +55,10 @@ namespace penny
     const dealii::FESystem<2>                         &finite_element() const { return fe; }
     const Parameters                                  &parameters() const { return prm; }
 
+    // Refines the `fraction` of cells with the largest Kelly indicators of u
+    // (the same cells on every rank), then rebuilds and factorises the system.
+    void refine_by_kelly(const DisplacementVector &u, double fraction);
+
     // u_z at the centre of the gap face: the opening of one face at r = 0.
     double opening_at_centre(const DisplacementVector &u) const;
     // Volume between the two faces, 2 int_0^c 2 pi r u_z dr.

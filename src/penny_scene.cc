@@ -69,9 +69,15 @@ namespace penny
 
   PennySceneResults solve_penny_gap(const Parameters &parameters, TimerOutput &timer)
   {
-    const double    c = parameters.geometry.gap_radius;
-    const FaceLoad  load(parameters.load, c);
-    PennyGapModel   model(parameters, timer);
+    PennyGapModel model(parameters, timer);
+    return measure_penny_gap(model, timer);
+  }
+
+  PennySceneResults measure_penny_gap(PennyGapModel &model, TimerOutput &timer)
+  {
+    const Parameters &parameters = model.parameters();
+    const double      c          = parameters.geometry.gap_radius;
+    const FaceLoad    load(parameters.load, c);
     const DisplacementVector u     = model.solve(load);
     const FaceLoad       reference = FaceLoad::unit_uniform();
     const double         residual  = model.last_solve().relative_residual;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "parameters.h"
+#include "penny_gap_model.h"
 
 #include <deal.II/base/timer.h>
 
@@ -36,7 +37,9 @@ namespace penny
   // fields when the parameters ask for them.
   PennySceneResults solve_penny_gap(const Parameters &parameters, dealii::TimerOutput &timer);
 
-  // solve_penny_gap, then the table printed and the result files written.
+  // The same on a model already built (and perhaps adaptively refined).
+  PennySceneResults measure_penny_gap(PennyGapModel &model, dealii::TimerOutput &timer);
 
+  // solve_penny_gap, then the table printed and the result files written.
   PennySceneResults run_penny_scene(const Parameters &parameters, std::ostream &log);
 } // namespace penny
