@@ -16,6 +16,13 @@ namespace penny
     {
       return std::exp(-x * x / 2) / std::sqrt(2 * M_PI);
     }
+
+    // The j-th of n Chebyshev points of the second kind on [0, t_max].
+    double
+    chebyshev_point(const double t_max, const unsigned int j, const unsigned int n)
+    {
+      return t_max * (1 - std::cos(j * M_PI / (n - 1))) / 2;
+    }
   } // namespace
 
   GapPopulation
@@ -96,7 +103,7 @@ namespace penny
     std::vector<double> tensions(n_points);
     for (unsigned int j = 0; j < n_points; ++j)
       {
-        const double t = t_max * (1 - std::cos(j * M_PI / (n_points - 1))) / 2;
+        const double t = chebyshev_point(t_max, j, n_points);
         tensions[j]    = adhesion + t * t;
       }
     return tensions;
@@ -109,7 +116,7 @@ namespace penny
     std::vector<double> nodes(n), weights(n);
     for (unsigned int j = 0; j < n; ++j)
       {
-        nodes[j]   = t_max * (1 - std::cos(j * M_PI / (n - 1))) / 2;
+        nodes[j]   = chebyshev_point(t_max, j, n);
         weights[j] = (j % 2 ? -1. : 1.) * (j == 0 || j == n - 1 ? 0.5 : 1.);
       }
     // Barycentric formula for Chebyshev points of the second kind.

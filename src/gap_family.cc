@@ -55,4 +55,12 @@ namespace penny
     const SifsWithReference K = solve_with_reference(c, FaceLoad::unit_quadratic());
     return {K.reference, K.load};
   }
+
+  double GapFamily::wall_time() const
+  {
+    double total = 0;
+    for (const auto &phase : timer.get_summary_data(TimerOutput::total_wall_time))
+      total += phase.second;
+    return total;
+  }
 } // namespace penny

@@ -34,6 +34,9 @@ namespace penny
 
     unsigned int n_solves() const { return solves; }
 
+    // Wall time of every phase timed so far (s).
+    double wall_time() const;
+
   private:
     Parameters scaled_to(double c) const;
 

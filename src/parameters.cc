@@ -586,15 +586,10 @@ namespace penny
     Parameters parameters;
     parameters.parse(prm);
 
-    // A relative mesh path is read from the parameter file's folder.
-    const std::filesystem::path mesh_path(parameters.mesh.mesh_file);
-    if (mesh_path.is_relative())
-      parameters.mesh.mesh_file =
-        (std::filesystem::path(filename).parent_path() / mesh_path).lexically_normal().string();
-    const std::filesystem::path spectrum_path(parameters.roughness.spectrum_file);
-    if (spectrum_path.is_relative())
-      parameters.roughness.spectrum_file =
-        (std::filesystem::path(filename).parent_path() / spectrum_path).lexically_normal().string();
+    // Relative file paths are read from the parameter file's folder.
+    for (std::string *path : {&parameters.mesh.mesh_file, &parameters.roughness.spectrum_file})
+      if (std::filesystem::path(*path).is_relative())
+        *path = (std::filesystem::path(filename).parent_path() / *path).lexically_normal().string();
     if (parameters.roughness.spectrum == RoughnessParameters::Spectrum::file &&
         !std::filesystem::is_regular_file(parameters.roughness.spectrum_file))
       throw InputError("Roughness/Spectrum file = '" + parameters.roughness.spectrum_file +
