@@ -9,6 +9,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$work/out"
 echo "earlier result" > "$work/out/rings.csv"
+touch "$work/out/.penny-results"
 cd "$work" || exit 1
 
 "$penny" "$prm" > stdout 2> stderr
@@ -19,4 +20,5 @@ fail() { echo "FAIL: $*"; echo "--- stderr:"; cat stderr; exit 1; }
 grep -qF -- "$expected" stderr || fail "stderr lacks: $expected"
 [ "$(cat out/rings.csv)" = "earlier result" ] || fail "the earlier result in out/ was changed"
 [ -z "$(ls out | grep -v '^rings.csv$')" ] || fail "the failed run wrote into out/"
+[ -z "$(ls -A . | grep staging)" ] || fail "the failed run left a staging folder"
 echo "ok: $(cat stderr)"

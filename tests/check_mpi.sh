@@ -10,7 +10,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 for ranks in 1 2; do
-  sed "s|set Directory    = mpi|set Directory    = ranks-$ranks|" "$scene" > scene.prm
+  sed "s|set Directory *= mpi|set Directory = ranks-$ranks|" "$scene" > scene.prm
   printf 'subsection Linear solver\n  set Type = %s\n  set Tolerance = 1e-12\nend\n' "$solver" >> scene.prm
   mpirun -np $ranks "$penny" scene.prm > ranks-$ranks.log
 done

@@ -3,7 +3,8 @@
 // stable-branch equilibrium radius, plus the closed forms they are checked by.
 #define BOOST_TEST_MODULE adhesion
 #define BOOST_TEST_NO_MAIN
-#include "adhesive_gap.h"
+#include "fracture/adhesive_gap.h"
+#include "fracture/gap_searches.h"
 #include "test_support.h"
 
 #include <boost/math/tools/minima.hpp>
@@ -17,12 +18,11 @@ using namespace penny;
 
 namespace
 {
-  Parameters test_size(const unsigned int degree = 3)
+  // Test size: 16 tip levels; the searches use the ring of radius 0.75 c.
+  GapFamily
+  test_size(dealii::TimerOutput &timer, const unsigned int degree = 3)
   {
-    Parameters parameters            = default_parameters();
-    parameters.mesh.tip_levels       = 16;
-    parameters.finite_element.degree = degree;
-    return parameters;
+    return GapFamily(test_size_model(16, degree), 0.75, timer);
   }
 
   const double R_p  = 7.8125e-7;
@@ -32,9 +32,12 @@ namespace
 BOOST_AUTO_TEST_CASE(closed_form_constants)
 {
   // Minimising P(c) numerically reproduces psi and c_min.
-  const double scale = adhesion_length(R_p, K_Ic);
+  const double scale     = adhesion_length(R_p, K_Ic);
   const auto [c_min, p0] = boost::math::tools::brent_find_minima(
-    [](const double c) { return closed_form::adhesive_tension(c, R_p, K_Ic); }, 0.1 * scale, 10 * scale, 26);
+      [](const double c) { return closed_form::adhesive_tension(c, R_p, K_Ic); },
+      0.1 * scale,
+      10 * scale,
+      26);
   BOOST_TEST(p0 / adhesion_tension(R_p, K_Ic) == closed_form::psi, tt::tolerance(1e-12));
   BOOST_TEST(c_min / scale == closed_form::c_min_factor, tt::tolerance(1e-7));
 
@@ -47,21 +50,24 @@ BOOST_AUTO_TEST_CASE(closed_form_constants)
 BOOST_AUTO_TEST_CASE(adhesionless_root)
 {
   dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
-  GapFamily           gaps(test_size(), timer);
-  const double        a = 0.6;
-  BOOST_TEST(fe_adhesionless_gap_radius(gaps, 1e6, a) / a == closed_form::adhesionless_c_over_a, tt::tolerance(1e-4));
+  GapFamily           gaps = test_size(timer);
+  const double        a    = 0.6;
+  BOOST_TEST(fe_adhesionless_gap_radius(gaps, 1e6, a) / a == closed_form::adhesionless_c_over_a,
+             tt::tolerance(1e-4));
 }
 
 BOOST_AUTO_TEST_CASE(adhesive_minimum_and_equilibrium)
 {
   dealii::TimerOutput   timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
-  GapFamily             gaps(test_size(), timer);
+  GapFamily             gaps    = test_size(timer);
   const AdhesiveMinimum minimum = fe_adhesive_minimum(gaps, R_p, K_Ic);
   BOOST_TEST(minimum.tension / adhesion_tension(R_p, K_Ic) == closed_form::psi, tt::tolerance(1e-4));
-  BOOST_TEST(minimum.gap_radius / adhesion_length(R_p, K_Ic) == closed_form::c_min_factor, tt::tolerance(1e-4));
+  BOOST_TEST(minimum.gap_radius / adhesion_length(R_p, K_Ic) == closed_form::c_min_factor,
+             tt::tolerance(1e-4));
 
   const double P = 1.3 * minimum.tension;
-  BOOST_TEST(*fe_stable_gap_radius(gaps, P, R_p, K_Ic, minimum) == *closed_form::stable_gap_radius(P, R_p, K_Ic),
+  BOOST_TEST(*fe_stable_gap_radius(gaps, P, R_p, K_Ic, minimum) ==
+                 *closed_form::stable_gap_radius(P, R_p, K_Ic),
              tt::tolerance(1e-4));
   BOOST_TEST(!fe_stable_gap_radius(gaps, 0.999 * minimum.tension, R_p, K_Ic, minimum).has_value());
 }
@@ -71,12 +77,12 @@ BOOST_AUTO_TEST_CASE(adhesive_minimum_and_equilibrium)
 BOOST_AUTO_TEST_CASE(psi_independent_of_scales)
 {
   dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
-  GapFamily           gaps(test_size(2), timer);
-  const auto psi = [&](const double r_p, const double k_ic) {
+  GapFamily           gaps = test_size(timer, 2);
+  const auto          psi  = [&](const double r_p, const double k_ic) {
     return fe_adhesive_minimum(gaps, r_p, k_ic).tension / adhesion_tension(r_p, k_ic);
   };
   const double reference = psi(R_p, K_Ic);
-  for (const double r_p : {1e-9, 1e-3})
-    for (const double k_ic : {1e3, 1e9})
+  for (const double r_p : { 1e-9, 1e-3 })
+    for (const double k_ic : { 1e3, 1e9 })
       BOOST_TEST(psi(r_p, k_ic) == reference, tt::tolerance(1e-8));
 }

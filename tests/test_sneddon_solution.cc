@@ -2,7 +2,8 @@
 // and a load only the quadrature handles against hand-integrated values.
 #define BOOST_TEST_MODULE sneddon_solution
 #define BOOST_TEST_NO_MAIN
-#include "sneddon_solution.h"
+#include "fracture/sneddon_solution.h"
+#include "input/input_error.h"
 
 #include <boost/test/unit_test.hpp>
 
@@ -18,7 +19,8 @@ namespace
   const double P       = 3e5;
   const double e_prime = 2e9;
 
-  LoadParameters load(const LoadParameters::Type type, const double a = 1, const std::string &expression = "")
+  LoadParameters
+  load(const LoadParameters::Type type, const double a = 1, const std::string &expression = "")
   {
     LoadParameters parameters;
     parameters.type           = type;
@@ -35,7 +37,7 @@ BOOST_AUTO_TEST_CASE(uniform_load, *boost::unit_test::tolerance(1e-12))
   const SneddonSolution exact(p, c, e_prime);
   BOOST_TEST(exact.stress_intensity_factor() == 2 * P * std::sqrt(c / pi));
   BOOST_TEST(exact.stress_intensity_factor_by_quadrature() == exact.stress_intensity_factor());
-  for (const double r : {0., 0.3 * c, 0.9 * c, 0.999 * c})
+  for (const double r : { 0., 0.3 * c, 0.9 * c, 0.999 * c })
     BOOST_TEST(exact.opening_by_quadrature(r) == exact.opening(r));
   BOOST_TEST(exact.gap_volume() == 16 * P * c * c * c / (3 * e_prime));
   BOOST_TEST(exact.gap_volume_by_quadrature() == exact.gap_volume());
@@ -48,7 +50,7 @@ BOOST_AUTO_TEST_CASE(parabolic_load, *boost::unit_test::tolerance(1e-12))
   const SneddonSolution exact(p, c, e_prime);
   BOOST_TEST(exact.stress_intensity_factor() == 2 * P * std::sqrt(c / pi) * (1 - 2 * c * c / (3 * a * a)));
   BOOST_TEST(exact.stress_intensity_factor_by_quadrature() == exact.stress_intensity_factor());
-  for (const double r : {0., 0.5 * c, 0.99 * c})
+  for (const double r : { 0., 0.5 * c, 0.99 * c })
     BOOST_TEST(exact.opening_by_quadrature(r) == exact.opening(r));
   BOOST_TEST(exact.gap_volume_by_quadrature() == exact.gap_volume());
 }
@@ -56,11 +58,12 @@ BOOST_AUTO_TEST_CASE(parabolic_load, *boost::unit_test::tolerance(1e-12))
 // K_I of the parabola vanishes at c/a = sqrt(3/2) and is negative beyond.
 BOOST_AUTO_TEST_CASE(parabolic_root)
 {
-  const double    a_root = c / std::sqrt(1.5);
-  const double    scale  = P * std::sqrt(c);
-  const FaceLoad  at_root(load(LoadParameters::Type::parabolic, a_root), c);
+  const double   a_root = c / std::sqrt(1.5);
+  const double   scale  = P * std::sqrt(c);
+  const FaceLoad at_root(load(LoadParameters::Type::parabolic, a_root), c);
   BOOST_TEST(std::abs(SneddonSolution(at_root, c, e_prime).stress_intensity_factor()) < 1e-15 * scale);
-  BOOST_TEST(std::abs(SneddonSolution(at_root, c, e_prime).stress_intensity_factor_by_quadrature()) < 1e-13 * scale);
+  BOOST_TEST(std::abs(SneddonSolution(at_root, c, e_prime).stress_intensity_factor_by_quadrature()) <
+             1e-13 * scale);
   const FaceLoad beyond(load(LoadParameters::Type::parabolic, 0.99 * a_root), c);
   BOOST_TEST(SneddonSolution(beyond, c, e_prime).stress_intensity_factor() < 0);
   BOOST_TEST(SneddonSolution(beyond, c, e_prime).stress_intensity_factor_by_quadrature() < 0);

@@ -3,10 +3,11 @@
 // fit, Johnson's sinusoid, and the area-load curve with the FE g at test size.
 #define BOOST_TEST_MODULE statistics
 #define BOOST_TEST_NO_MAIN
-#include "adhesive_gap.h"
-#include "contact_area.h"
-#include "contact_scenes.h"
-#include "roughness.h"
+#include "fracture/adhesive_gap.h"
+#include "input/input_error.h"
+#include "scenes/fe_gap_area_scene.h"
+#include "statistics/contact_area.h"
+#include "statistics/roughness.h"
 #include "test_support.h"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
@@ -98,7 +99,10 @@ BOOST_AUTO_TEST_CASE(tabulated_spectrum_moments)
 
 BOOST_AUTO_TEST_CASE(spectrum_file)
 {
-  const auto file = std::filesystem::temp_directory_path() / "penny-test-psd.txt";
+  const ScratchFolder scratch;
+  const auto          file =
+      scratch.path /
+      ("psd-" + std::to_string(dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD)) + ".txt");
   std::ofstream(file) << "# q C(q)\n1e3 2e-20\n\n1e4 2e-23  # comment\n";
   const PowerSpectrum spectrum = read_power_spectrum(file.string(), "Roughness/Spectrum file");
   BOOST_TEST(spectrum.wavenumbers.size() == 2u);
@@ -239,17 +243,17 @@ BOOST_AUTO_TEST_CASE(johnson_sinusoid)
 
 BOOST_AUTO_TEST_CASE(toughness_and_amplitude_parameters)
 {
+  const Scene             &scene = find_scene("rough-surface");
   dealii::ParameterHandler prm;
-  Parameters::declare(prm);
+  declare_scene(prm, scene);
   prm.parse_input_from_string(
       "subsection Material\n set Young's modulus E = 1e7\n set Poisson's ratio nu = 0.49\nend\n"
       "subsection Adhesion\n set Toughness given by = G_c\n set Work of adhesion G_c = 0.05\nend\n"
       "subsection Roughness\n set Amplitude given by = rms height\n set Rms height = 2e-6\nend\n");
-  Parameters parameters;
-  parameters.parse(prm);
-  BOOST_TEST(parameters.adhesion.critical_stress_intensity == std::sqrt(1e7 / (1 - 0.49 * 0.49) * 0.05),
+  const Parameters parameters = Parameters::parse(prm, scene.sections);
+  BOOST_TEST(parameters.adhesion->critical_stress_intensity == std::sqrt(1e7 / (1 - 0.49 * 0.49) * 0.05),
              tt::tolerance(1e-15));
-  const auto &r = parameters.roughness;
+  const auto &r = *parameters.roughness;
   BOOST_TEST(std::sqrt(spectral_moments(power_law_spectrum(r.hurst, r.q0, r.zeta, r.amplitude)).m0) == 2e-6,
              tt::tolerance(1e-13));
 }
@@ -257,15 +261,15 @@ BOOST_AUTO_TEST_CASE(toughness_and_amplitude_parameters)
 BOOST_AUTO_TEST_CASE(fe_gap_function_aggregation)
 {
   // Test size: the FE g at 8 tensions, A_nc within 1e-4 of the closed-form g's.
-  Parameters parameters                     = default_parameters();
-  parameters.mesh.tip_levels                = 16;
-  parameters.finite_element.degree          = 3;
-  parameters.area_load.n_tabulated_tensions = 8;
-  parameters.area_load.n_points             = 4;
-  parameters.output.directory = (std::filesystem::temp_directory_path() / "penny-test-fe-gap-area").string();
-  std::filesystem::create_directories(parameters.output.directory);
-  std::ostringstream log;
-  BOOST_TEST(run_fe_gap_area_scene(parameters, log) < 1e-4);
-  BOOST_TEST(std::filesystem::is_regular_file(parameters.output.directory + "/fe-gap-area.csv"));
-  std::filesystem::remove_all(parameters.output.directory);
+  Parameters parameters                        = default_parameters("fe-gap-area");
+  parameters.mesh->tip_levels                  = 16;
+  parameters.finite_element->degree            = 3;
+  parameters.fe_gap_area->n_tabulated_tensions = 8;
+  parameters.area_load->n_points               = 4;
+  const ScratchFolder scratch;
+  ResultFolder        results(scratch.path / "fe-gap-area", "");
+  std::ostringstream  log;
+  BOOST_TEST(run_fe_gap_area_scene(parameters, results, log) < 1e-4);
+  results.commit();
+  BOOST_TEST(std::filesystem::is_regular_file(scratch.path / "fe-gap-area" / "fe-gap-area.csv"));
 }

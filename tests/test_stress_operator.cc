@@ -1,9 +1,12 @@
-// The axisymmetric stress operator: a uniform stress state is reproduced
-// exactly at every quadrature point, and carries no energy release rate.
+// The elasticity operator of the axisymmetric model: a uniform stress state is
+// reproduced exactly at every quadrature point, and carries no energy release
+// rate; the hoop strain on the axis; plane strain has no out-of-plane strain.
 #define BOOST_TEST_MODULE stress_operator
 #define BOOST_TEST_NO_MAIN
-#include "axisymmetric_elasticity.h"
-#include "j_integral.h"
+#include "fe/elasticity.h"
+#include "fe/penny_gap_model.h"
+#include "fracture/crack_extension.h"
+#include "fracture/domain_integral.h"
 #include "test_support.h"
 
 #include <deal.II/base/function.h>
@@ -13,6 +16,8 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <boost/test/unit_test.hpp>
+
+#include <iostream>
 
 using namespace dealii;
 using namespace penny;
@@ -25,37 +30,29 @@ namespace
   struct UniformStrain : Function<2>
   {
     double a, b;
-    UniformStrain(const double a, const double b)
-      : Function<2>(2), a(a), b(b)
-    {}
-    double value(const Point<2> &x, const unsigned int component) const override
+    UniformStrain(const double a, const double b) : Function<2>(2), a(a), b(b) {}
+    double
+    value(const Point<2> &x, const unsigned int component) const override
     {
       return component == 0 ? a * x[0] : b * x[1];
     }
   };
-
-  Parameters small_model()
-  {
-    Parameters parameters                 = default_parameters();
-    parameters.geometry.domain_radius     = 20;
-    parameters.geometry.domain_height     = 20;
-    parameters.mesh.tip_levels            = 8;
-    parameters.finite_element.degree      = 2;
-    return parameters;
-  }
 } // namespace
 
 BOOST_AUTO_TEST_CASE(uniform_stress_state)
 {
-  const Parameters parameters = small_model();
-  TimerOutput      timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
-  PennyGapModel    model(parameters, timer);
+  auto model                   = test_size_model(8, 2);
+  model.geometry.domain_radius = 20;
+  model.geometry.domain_height = 20;
+  TimerOutput   timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
+  PennyGapModel gap(model, timer);
 
-  const double lambda = parameters.material.lame_lambda();
-  const double mu     = parameters.material.lame_mu();
-  const double a      = 1e-3;
-  const double b      = -2 * lambda * a / (lambda + 2 * mu);
-  const auto                   &dofs = model.dof_handler();
+  const auto                   &system = gap.get_system();
+  const double                  lambda = system.get_elasticity().lambda;
+  const double                  mu     = system.get_elasticity().mu;
+  const double                  a      = 1e-3;
+  const double                  b      = -2 * lambda * a / (lambda + 2 * mu);
+  const auto                   &dofs   = system.get_dof_handler();
   TrilinosWrappers::MPI::Vector owned(dofs.locally_owned_dofs(), MPI_COMM_WORLD);
   VectorTools::interpolate(dofs, UniformStrain(a, b), owned);
   IndexSet relevant;
@@ -63,34 +60,39 @@ BOOST_AUTO_TEST_CASE(uniform_stress_state)
   DisplacementVector u(dofs.locally_owned_dofs(), relevant, MPI_COMM_WORLD);
   u = owned;
 
-  const double      s_rr = lambda * (2 * a + b) + 2 * mu * a;
-  const QGauss<2>   quadrature(3);
-  FEValues<2>       fe_values(model.finite_element(), quadrature, update_values | update_gradients | update_quadrature_points);
+  const double    s_rr = lambda * (2 * a + b) + 2 * mu * a;
+  const QGauss<2> quadrature(3);
+  FEValues<2>     fe_values(
+      system.get_fe(), quadrature, update_values | update_gradients | update_quadrature_points);
   std::vector<Tensor<2, 2>> grad(quadrature.size());
   std::vector<Tensor<1, 2>> value(quadrature.size());
-  double            deviation = 0;
-  for (const auto &cell : model.dof_handler().active_cell_iterators())
-    {
-      fe_values.reinit(cell);
-      fe_values[FEValuesExtractors::Vector(0)].get_function_gradients(u, grad);
-      fe_values[FEValuesExtractors::Vector(0)].get_function_values(u, value);
-      for (const unsigned int q : fe_values.quadrature_point_indices())
-        {
-          const AxisymmetricTensor s = stress(strain(grad[q], value[q][0], fe_values.quadrature_point(q)[0]), lambda, mu);
-          deviation = std::max({deviation, std::abs(s.rr - s_rr), std::abs(s.tt - s_rr), std::abs(s.zz), std::abs(s.rz)});
-        }
-    }
-  BOOST_TEST(deviation < 1e-9 * s_rr);
+  double                    deviation = 0;
+  for (const auto &cell : dofs.active_cell_iterators())
+    if (cell->is_locally_owned())
+      {
+        fe_values.reinit(cell);
+        fe_values[FEValuesExtractors::Vector(0)].get_function_gradients(u, grad);
+        fe_values[FEValuesExtractors::Vector(0)].get_function_values(u, value);
+        for (const unsigned int q : fe_values.quadrature_point_indices())
+          {
+            const Strain s = system.get_elasticity().stress(
+                strain(Axisymmetric::gradient(grad[q], value[q], fe_values.quadrature_point(q))));
+            deviation = std::max({ deviation,
+                                   std::abs(s[0][0] - s_rr),
+                                   std::abs(s[2][2] - s_rr),
+                                   std::abs(s[1][1]),
+                                   std::abs(s[0][1]) });
+          }
+      }
+  BOOST_TEST(Utilities::MPI::max(deviation, MPI_COMM_WORLD) < 1e-9 * s_rr);
 
-  LoadParameters no_load  = parameters.load;
-  no_load.type            = LoadParameters::Type::uniform;
-  no_load.peak_tension    = 0;
-  const FaceLoad  zero(no_load, parameters.geometry.gap_radius);
-  const JIntegral j_integral(model);
-  const double    c       = parameters.geometry.gap_radius;
-  const double    j_scale = s_rr * s_rr / parameters.material.youngs_modulus * c;
-  for (const double rho : {0.25, 0.5, 0.75})
-    BOOST_TEST(std::abs(j_integral.energy_release_rate(u, zero, rho * c)) < 1e-10 * j_scale);
+  const auto                         no_load = [](const Point<2> &) { return 0.; };
+  const DomainIntegral<Axisymmetric> j_integral(system, model.material.plane_strain_modulus());
+  const double                       c       = model.geometry.gap_radius;
+  const double                       j_scale = s_rr * s_rr / model.material.youngs_modulus * c;
+  for (const double rho : { 0.25, 0.5, 0.75 })
+    BOOST_TEST(std::abs(j_integral.energy_release_rate(
+                   u, no_load, RingExtension<2>(gap.crack_tip(), rho * c, c))) < 1e-10 * j_scale);
 }
 
 // The hoop strain u_r/r tends to d_r u_r on the axis.
@@ -98,6 +100,23 @@ BOOST_AUTO_TEST_CASE(hoop_strain_on_axis)
 {
   Tensor<2, 2> grad;
   grad[0][0] = 0.25;
-  BOOST_TEST(strain(grad, 0., 0.).tt == 0.25);
-  BOOST_TEST(strain(grad, 0.5, 2.).tt == 0.25);
+  BOOST_TEST(Axisymmetric::gradient(grad, Tensor<1, 2>({ 0., 0. }), Point<2>(0, 1))[2][2] == 0.25);
+  BOOST_TEST(Axisymmetric::gradient(grad, Tensor<1, 2>({ 0.5, 0. }), Point<2>(2, 1))[2][2] == 0.25);
+  BOOST_TEST(PlaneStrain::gradient(grad, Tensor<1, 2>({ 0.5, 0. }), Point<2>(2, 1))[2][2] == 0.);
+}
+
+// sigma = lambda tr(e) I + 2 mu e, and von Mises of a uniaxial stress is its value.
+BOOST_AUTO_TEST_CASE(hooke_and_von_mises)
+{
+  const IsotropicElasticity elasticity{ 2., 3. };
+  Strain                    e;
+  e[0][0]            = 1e-3;
+  e[0][1]            = 2e-3;
+  const Strain sigma = elasticity.stress(e);
+  BOOST_TEST(sigma[0][0] == 2 * 1e-3 + 2 * 3 * 1e-3, boost::test_tools::tolerance(1e-15));
+  BOOST_TEST(sigma[1][1] == 2 * 1e-3, boost::test_tools::tolerance(1e-15));
+  BOOST_TEST(sigma[0][1] == 2 * 3 * 2e-3, boost::test_tools::tolerance(1e-15));
+  Strain uniaxial;
+  uniaxial[1][1] = -7;
+  BOOST_TEST(von_mises(uniaxial) == 7., boost::test_tools::tolerance(1e-15));
 }

@@ -1,60 +1,70 @@
-// penny: runs one penny-gap scene from a deal.II parameter file.
-#include "../parameters.h"
-#include "../scenes.h"
+// penny: runs one scene from a deal.II parameter file.
+#include "input/input_error.h"
+#include "scenes/scene_registry.h"
 
 #include <deal.II/base/mpi.h>
 
+#include <iomanip>
 #include <iostream>
 #include <string>
 
 namespace
 {
-  void print_usage(std::ostream &out)
+  void
+  print_usage(std::ostream &out)
   {
-    out << "Usage: penny SCENE.prm          run the scene described by the parameter file\n"
-           "       penny --print-parameters write a complete default parameter file to stdout\n"
-           "       penny --help             show this text\n"
+    out << "Usage: penny SCENE.prm                  run the scene described by the parameter file\n"
+           "       penny --print-parameters [SCENE] the entries SCENE reads, with defaults and "
+           "documentation\n"
+           "                                        (SCENE defaults to the first below)\n"
+           "       penny --help                     show this text\n"
            "\n"
-           "A scene solves the axisymmetric elasticity problem of one penny-shaped gap\n"
-           "(a crack of radius c whose faces carry the traction p(r)), computes K_I from\n"
-           "domain J-integrals on several rings and prints them beside Sneddon's closed\n"
-           "form. Results go to the folder 'Output/Directory': rings.csv, summary.txt,\n"
-           "parameters.prm (the parameters used) and, unless switched off, solution.vtu\n"
-           "with solution.pvd for ParaView. Examples are in prms/.\n";
+           "A parameter file names its scene in the entry 'Scene'. Results go to the folder\n"
+           "'Output/Directory', replaced whole by each run. Examples are in prms/. Scenes:\n";
+    std::size_t width = 0;
+    for (const auto &scene : penny::scene_registry())
+      width = std::max(width, scene.name.size());
+    for (const auto &scene : penny::scene_registry())
+      out << "  " << std::left << std::setw(width + 2) << scene.name << scene.description << '\n';
   }
 } // namespace
 
-int main(int argc, char **argv)
+int
+main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::string argument = argc == 2 ? argv[1] : "";
-  if (argument == "--help" || argument == "-h")
-    {
-      print_usage(std::cout);
-      return 0;
-    }
-  if (argument == "--print-parameters")
-    {
-      dealii::ParameterHandler prm;
-      penny::Parameters::declare(prm);
-      prm.print_parameters(std::cout, dealii::ParameterHandler::PRM);
-      return 0;
-    }
-  if (argc != 2 || argument.empty() || argument[0] == '-')
-    {
-      std::cerr << "penny: error: expected one parameter file (try 'penny --help')" << std::endl;
-      return 2;
-    }
-
+  const std::string                        argument = argc >= 2 ? argv[1] : "";
   // Under mpirun every rank computes; rank 0 speaks.
   const bool    speaks = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   std::ostream  silent(nullptr);
   std::ostream &log = speaks ? std::cout : silent;
   try
     {
-      dealii::ParameterHandler prm;
-      const auto               parameters = penny::Parameters::read(argument, prm);
-      penny::run_scene(parameters, prm, log);
+      if ((argument == "--help" || argument == "-h") && argc == 2)
+        {
+          print_usage(log);
+          return 0;
+        }
+      if (argument == "--print-parameters" && argc <= 3)
+        {
+          dealii::ParameterHandler prm;
+          penny::declare_scene(prm, argc == 3 ? penny::find_scene(argv[2]) : penny::scene_registry().front());
+          prm.print_parameters(log, dealii::ParameterHandler::PRM);
+          return 0;
+        }
+      if (argc != 2 || argument.empty() || argument[0] == '-')
+        {
+          if (speaks)
+            std::cerr << "penny: error: expected one parameter file (try 'penny --help')" << std::endl;
+          return 2;
+        }
+      const penny::Verdict verdict = penny::run_scene_file(argument, log);
+      if (!verdict.passed)
+        {
+          if (speaks)
+            std::cerr << "penny: FAIL: " << verdict.reason << std::endl;
+          return 1;
+        }
     }
   catch (const penny::InputError &error)
     {

@@ -1,0 +1,134 @@
+#include "fracture/domain_integral.h"
+
+#include "fe/boundary_faces.h"
+#include "fe/boundary_ids.h"
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/fe/fe_values.h>
+
+#include <cmath>
+
+namespace penny
+{
+  using namespace dealii;
+
+  template <typename Kinematics>
+  DomainIntegral<Kinematics>::DomainIntegral(const LinearElasticSystem<Kinematics> &system,
+                                             const double                           plane_strain_modulus)
+      : system(system), e_prime(plane_strain_modulus)
+  {
+  }
+
+  template <typename Kinematics>
+  double
+  DomainIntegral<Kinematics>::energy_release_rate(const DisplacementVector  &u,
+                                                  const Traction            &t,
+                                                  const CrackExtension<dim> &q) const
+  {
+    return bilinear(u, t, u, t, q);
+  }
+
+  template <typename Kinematics>
+  double
+  DomainIntegral<Kinematics>::stress_intensity_factor(const DisplacementVector  &u,
+                                                      const Traction            &t,
+                                                      const CrackExtension<dim> &q) const
+  {
+    return std::sqrt(e_prime * std::max(energy_release_rate(u, t, q), 0.));
+  }
+
+  template <typename Kinematics>
+  double
+  DomainIntegral<Kinematics>::signed_stress_intensity_factor(const DisplacementVector  &u,
+                                                             const Traction            &t,
+                                                             const DisplacementVector  &u_ref,
+                                                             const Traction            &t_ref,
+                                                             const CrackExtension<dim> &q) const
+  {
+    const double k_ref = stress_intensity_factor(u_ref, t_ref, q);
+    if (!(k_ref > 0))
+      throw std::runtime_error("J-integral: the reference load gives K_I = 0; it cannot sign K_I");
+    return e_prime * bilinear(u, t, u_ref, t_ref, q) / k_ref;
+  }
+
+  // Polarised integrands: sigma(u)_ij v_i,k q_k,j is replaced by the mean of
+  // the (u, v) and (v, u) products, W by sigma(u):e(v)/2.
+  template <typename Kinematics>
+  double
+  DomainIntegral<Kinematics>::bilinear(const DisplacementVector  &u,
+                                       const Traction            &t_u,
+                                       const DisplacementVector  &v,
+                                       const Traction            &t_v,
+                                       const CrackExtension<dim> &q) const
+  {
+    const auto &fe         = system.get_fe();
+    const auto &elasticity = system.get_elasticity();
+    // The weight is smooth but only C3 at the edge of its support: a few extra points.
+    const QGauss<dim>     quadrature(fe.degree + 4);
+    const QGauss<dim - 1> face_quadrature(fe.degree + 4);
+    FEValues<dim>         fe_values(
+        fe, quadrature, update_values | update_gradients | update_quadrature_points | update_JxW_values);
+    FEFaceValues<dim> fe_face(
+        fe, face_quadrature, update_gradients | update_quadrature_points | update_JxW_values);
+    const FEValuesExtractors::Vector displacement(0);
+    std::vector<Tensor<2, dim>>      grad_u(quadrature.size()), grad_v(quadrature.size());
+    std::vector<Tensor<1, dim>>      value_u(quadrature.size()), value_v(quadrature.size());
+    std::vector<Tensor<2, dim>>      face_grad_u(face_quadrature.size()), face_grad_v(face_quadrature.size());
+
+    double area_term = 0;
+    for (const auto &cell : system.get_dof_handler().active_cell_iterators())
+      {
+        if (!cell->is_locally_owned() || !q.may_touch(cell))
+          continue;
+        fe_values.reinit(cell);
+        fe_values[displacement].get_function_gradients(u, grad_u);
+        fe_values[displacement].get_function_gradients(v, grad_v);
+        fe_values[displacement].get_function_values(u, value_u);
+        fe_values[displacement].get_function_values(v, value_v);
+        for (const unsigned int k : fe_values.quadrature_point_indices())
+          {
+            const Point<dim> &x      = fe_values.quadrature_point(k);
+            const Tensor3     grad_q = Kinematics::gradient(q.gradient(x), q.value(x), x);
+            if (grad_q.norm_square() == 0)
+              continue;
+            const Tensor3 du  = Kinematics::gradient(grad_u[k], value_u[k], x);
+            const Tensor3 dv  = Kinematics::gradient(grad_v[k], value_v[k], x);
+            const Strain  s_u = elasticity.stress(strain(du));
+            const Strain  s_v = elasticity.stress(strain(dv));
+            const double  W   = 0.5 * (s_u * strain(dv));
+            const double  flux =
+                0.5 * (scalar_product(Tensor3(s_u), dv * grad_q) + scalar_product(Tensor3(s_v), du * grad_q));
+            area_term += (flux - W * trace(grad_q)) * Kinematics::measure(x) * fe_values.JxW(k);
+          }
+      }
+
+    double face_term = 0;
+    for_each_boundary_face(system.get_dof_handler(),
+                           boundary_id::gap_face,
+                           fe_face,
+                           [&](const auto &cell, const FEFaceValues<dim> &face) {
+                             if (!q.may_touch(cell))
+                               return;
+                             face[displacement].get_function_gradients(u, face_grad_u);
+                             face[displacement].get_function_gradients(v, face_grad_v);
+                             for (const unsigned int k : face.quadrature_point_indices())
+                               {
+                                 const Point<dim>    &x  = face.quadrature_point(k);
+                                 const Tensor<1, dim> qx = q.value(x);
+                                 face_term += 0.5 *
+                                              (t_u(x) * (face_grad_v[k][dim - 1] * qx) +
+                                               t_v(x) * (face_grad_u[k][dim - 1] * qx)) *
+                                              Kinematics::measure(x) * face.JxW(k);
+                               }
+                           });
+
+    const double result =
+        2 / q.front_measure() * Utilities::MPI::sum(area_term - face_term, system.get_communicator());
+    if (!std::isfinite(result))
+      throw std::runtime_error("J-integral: the domain integral gives NaN or Inf");
+    return result;
+  }
+
+  template class DomainIntegral<Axisymmetric>;
+} // namespace penny

@@ -1,0 +1,29 @@
+// The paper's constants found from FE solves alone, by root finding and
+// minimisation over the gap radius c of a GapFamily. Closed-form values never
+// enter a search, which only uses the natural length scale (R_p K_Ic)^(2/5)
+// to place its first bracket.
+#pragma once
+
+#include "fracture/gap_family.h"
+
+#include <optional>
+
+namespace penny
+{
+  struct AdhesiveMinimum
+  {
+    double gap_radius; // c_min (m)
+    double tension;    // p0 = P(c_min) (Pa)
+  };
+
+  // Adhesionless gap: the root of the FE K_I(c) for the parabola (P, a).
+  double fe_adhesionless_gap_radius(GapFamily &gaps, double P, double a);
+
+  // Minimum over c of the FE P(c) = [K_Ic + K_quadratic(c)/(2 R_p)] / K_uniform(c) (Brent).
+  AdhesiveMinimum fe_adhesive_minimum(GapFamily &gaps, double R_p, double K_Ic);
+
+  // FE g: the radius c >= c_min where P K_uniform(c) - K_quadratic(c)/(2 R_p) = K_Ic,
+  // or nothing when P < p0 (the gap closes: full contact).
+  std::optional<double>
+  fe_stable_gap_radius(GapFamily &gaps, double P, double R_p, double K_Ic, const AdhesiveMinimum &minimum);
+} // namespace penny

@@ -1,0 +1,69 @@
+// A table of results: named columns (units in their names), rows of numbers
+// or text. The same table is printed aligned to the screen, with the digits
+// each column (or cell) asks for, and written as CSV with every digit.
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <string>
+#include <type_traits>
+#include <variant>
+#include <vector>
+
+namespace penny
+{
+  class Table
+  {
+  public:
+    // How a number is shown on the screen; the CSV keeps every digit.
+    struct Format
+    {
+      int  precision  = 6;
+      bool scientific = false;
+    };
+
+    struct Column
+    {
+      std::string name;
+      Format      format = {};
+    };
+
+    struct Cell
+    {
+      std::variant<double, long long, std::string> value;
+      std::optional<Format>                        format; // the column's unless given
+
+      Cell(const double number, const std::optional<Format> own_format = {})
+          : value(number), format(own_format)
+      {
+      }
+      template <typename Integer, typename = std::enable_if_t<std::is_integral_v<Integer>>>
+      Cell(const Integer number) : value(static_cast<long long>(number))
+      {
+      }
+      Cell(std::string text) : value(std::move(text)) {}
+      Cell(const char *text) : value(std::string(text)) {}
+    };
+
+    explicit Table(std::vector<Column> columns);
+
+    // A table of named quantities: columns "quantity" and "value".
+    static Table summary();
+
+    // One cell per column.
+    void add_row(std::vector<Cell> row);
+
+    std::size_t
+    n_rows() const
+    {
+      return rows.size();
+    }
+
+    void        print(std::ostream &out) const;
+    std::string csv() const;
+
+  private:
+    std::vector<Column>            columns;
+    std::vector<std::vector<Cell>> rows;
+  };
+} // namespace penny

@@ -1,0 +1,188 @@
+#include "scenes/scene_registry.h"
+
+#include "input/input_error.h"
+#include "scenes/adhesion_scenes.h"
+#include "scenes/convergence_scene.h"
+#include "scenes/fe_gap_area_scene.h"
+#include "scenes/penny_gap_scene.h"
+#include "scenes/stability_scene.h"
+#include "scenes/statistics_scenes.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <sstream>
+
+namespace penny
+{
+  using dealii::ParameterHandler;
+
+  namespace
+  {
+    using S = Section;
+
+    // The sections of every penny-gap FE model, and more.
+    std::vector<Section>
+    fe_and(std::vector<Section> more)
+    {
+      std::vector<Section> sections = { S::geometry,       S::material,      S::load,       S::mesh,
+                                        S::finite_element, S::linear_solver, S::j_integral, S::output };
+      sections.insert(sections.end(), more.begin(), more.end());
+      return sections;
+    }
+
+    // An entry point whose results carry no verdict of their own.
+    template <typename Run>
+    std::function<Verdict(const Parameters &, const ResultFolder &, std::ostream &)>
+    without_verdict(Run run)
+    {
+      return [run](const Parameters &parameters, const ResultFolder &results, std::ostream &log) {
+        run(parameters, results, log);
+        return Verdict{};
+      };
+    }
+
+    Verdict
+    stability_verdict(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+    {
+      const auto rows     = run_stability_scene(parameters, results, log);
+      const auto failures = std::count_if(
+          rows.begin(), rows.end(), [](const StabilityRow &row) { return row.status.rfind("FAIL", 0) == 0; });
+      if (failures == 0)
+        return {};
+      return { false, std::to_string(failures) + " stability case(s) failed; see stability.csv" };
+    }
+
+    std::vector<std::string>
+    scene_names()
+    {
+      std::vector<std::string> names;
+      for (const auto &scene : scene_registry())
+        names.push_back(scene.name);
+      return names;
+    }
+
+    std::string
+    scene_documentation()
+    {
+      std::string doc = "What the run computes:";
+      for (const auto &scene : scene_registry())
+        doc += " " + scene.name + ": " + scene.description + ".";
+      return doc;
+    }
+  } // namespace
+
+  const std::vector<Scene> &
+  scene_registry()
+  {
+    static const std::vector<Scene> registry = {
+      { "penny-gap",
+        "one FE solve of the Load; K_I from J-integrals (and the signed K_I) on every ring, the face opening "
+        "and the gap "
+        "volume, beside Sneddon's closed forms",
+        fe_and({ S::fields }),
+        without_verdict(run_penny_gap_scene) },
+      { "gap-size-adhesionless",
+        "the gap radius where the FE K_I of the parabola (P, a) vanishes: c/a = sqrt(3/2)",
+        fe_and({}),
+        without_verdict(run_gap_size_scene) },
+      { "adhesive-minimum",
+        "the minimum over c of the FE peak tension P(c) at K_I = K_Ic: psi and c_min",
+        fe_and({ S::adhesion }),
+        without_verdict(run_adhesive_minimum_scene) },
+      { "gap-tension-curve",
+        "p_hat(c_hat) from FE beside (c_hat^2 + 4/sqrt(c_hat))/5 (paper Fig. 2)",
+        fe_and({ S::adhesion, S::gap_tension_curve }),
+        without_verdict(run_gap_tension_curve_scene) },
+      { "adhesive-equilibrium",
+        "the FE gap radius on the stable branch for the peak tension P (the paper's g)",
+        fe_and({ S::adhesion }),
+        without_verdict(run_adhesive_equilibrium_scene) },
+      { "stability",
+        "stiff and extreme cases around the scene's parameters, each passing or flagged, in one table",
+        fe_and({ S::stability }),
+        stability_verdict },
+      { "convergence",
+        "the penny-gap solve over the sequence of discretisations in 'Convergence'",
+        fe_and({ S::convergence }),
+        without_verdict(run_convergence_scene) },
+      { "sinusoid-contact",
+        "Johnson's adhesive 1D sinusoid from its closed form (paper Fig. 1)",
+        { S::sinusoid, S::output },
+        without_verdict(run_sinusoid_contact_scene) },
+      { "zero-load-gap-area",
+        "A_nc/A_0 at zero mean pressure against p0/sqrt(V) (paper Fig. 3)",
+        { S::material, S::adhesion, S::roughness, S::area_load, S::zero_load_gap_area, S::output },
+        without_verdict(run_zero_load_gap_area_scene) },
+      { "area-load",
+        "A_nc/A_0 and A_c/A_0 against p_bar/sqrt(V) for each H and zeta (paper Figs. 4 and 5)",
+        { S::material, S::adhesion, S::roughness, S::area_load, S::output },
+        without_verdict(run_area_load_scene) },
+      { "rough-surface",
+        "moments, summit statistics and p0 of the Roughness spectrum in both conventions, and its area-load "
+        "curve",
+        { S::material, S::adhesion, S::roughness, S::area_load, S::output },
+        without_verdict(run_rough_surface_scene) },
+      { "magnification-scaling",
+        "theta of p0/sqrt(V) ~ zeta^theta fitted from the moments, for each H",
+        { S::area_load, S::magnification_scaling, S::output },
+        without_verdict(run_magnification_scaling_scene) },
+      { "fe-gap-area",
+        "the area-load curve with the FE gap function g beside the closed-form g's",
+        fe_and({ S::adhesion, S::area_load, S::fe_gap_area }),
+        without_verdict(run_fe_gap_area_scene) }
+    };
+    return registry;
+  }
+
+  const Scene &
+  find_scene(const std::string &name)
+  {
+    for (const auto &scene : scene_registry())
+      if (scene.name == name)
+        return scene;
+    throw InputError("Scene = '" + name + "' is not a scene (penny --help lists them)");
+  }
+
+  void
+  declare_scene(ParameterHandler &prm, const Scene &scene)
+  {
+    Parameters::declare(prm, scene_names(), scene_documentation(), scene.sections);
+  }
+
+  SceneFile
+  read_scene_file(const std::string &filename)
+  {
+    std::vector<Section> every_section;
+    for (const auto &scene : scene_registry())
+      for (const Section section : scene.sections)
+        if (std::find(every_section.begin(), every_section.end(), section) == every_section.end())
+          every_section.push_back(section);
+    ParameterHandler all;
+    Parameters::declare(all, scene_names(), scene_documentation(), every_section);
+    parse_parameter_file(all, filename, "");
+    const Scene &scene = find_scene(all.get("Scene"));
+
+    ParameterHandler prm;
+    declare_scene(prm, scene);
+    parse_parameter_file(prm, filename, scene.name);
+    const std::string  folder = std::filesystem::path(filename).parent_path().string();
+    SceneFile          file{ &scene, Parameters::parse(prm, scene.sections, folder), "" };
+    std::ostringstream used;
+    prm.print_parameters(used, ParameterHandler::PRM);
+    file.used_parameters = used.str();
+    return file;
+  }
+
+  // The output folder is checked before the scene runs, and the parameters
+  // are recorded last: a run that fails leaves the previous results as they were.
+  Verdict
+  run_scene_file(const std::string &filename, std::ostream &log)
+  {
+    const SceneFile file = read_scene_file(filename);
+    ResultFolder    results(file.parameters.output.value().directory, filename);
+    const Verdict   verdict = file.scene->run(file.parameters, results, log);
+    results.write("parameters.prm", file.used_parameters);
+    results.commit();
+    return verdict;
+  }
+} // namespace penny
