@@ -5,8 +5,7 @@
 
 bool init_unit_test();
 
-int
-main(int argc, char *argv[])
+int main(int argc, char *argv[])
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   return boost::unit_test::unit_test_main(&init_unit_test, argc, argv);

@@ -19,8 +19,7 @@ using namespace penny;
 namespace
 {
   // Test size: 16 tip levels; the searches use the ring of radius 0.75 c.
-  GapFamily
-  test_size(dealii::TimerOutput &timer, const unsigned int degree = 3)
+  GapFamily test_size(dealii::TimerOutput &timer, const unsigned int degree = 3)
   {
     return GapFamily(test_size_model(16, degree), 0.75, timer);
   }
@@ -34,9 +33,7 @@ BOOST_AUTO_TEST_CASE(closed_form_constants)
   // Minimising P(c) numerically reproduces psi and c_min.
   const double scale     = adhesion_length(R_p, K_Ic);
   const auto [c_min, p0] = boost::math::tools::brent_find_minima(
-      [](const double c) { return closed_form::adhesive_tension(c, R_p, K_Ic); },
-      0.1 * scale,
-      10 * scale,
+      [](const double c) { return closed_form::adhesive_tension(c, R_p, K_Ic); }, 0.1 * scale, 10 * scale,
       26);
   BOOST_TEST(p0 / adhesion_tension(R_p, K_Ic) == closed_form::psi, tt::tolerance(1e-12));
   BOOST_TEST(c_min / scale == closed_form::c_min_factor, tt::tolerance(1e-7));
@@ -82,7 +79,7 @@ BOOST_AUTO_TEST_CASE(psi_independent_of_scales)
     return fe_adhesive_minimum(gaps, r_p, k_ic).tension / adhesion_tension(r_p, k_ic);
   };
   const double reference = psi(R_p, K_Ic);
-  for (const double r_p : { 1e-9, 1e-3 })
-    for (const double k_ic : { 1e3, 1e9 })
+  for (const double r_p : {1e-9, 1e-3})
+    for (const double k_ic : {1e3, 1e9})
       BOOST_TEST(psi(r_p, k_ic) == reference, tt::tolerance(1e-8));
 }

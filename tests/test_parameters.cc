@@ -16,8 +16,7 @@ using namespace penny;
 namespace
 {
   // Writes `text` to a parameter file and reads it.
-  SceneFile
-  read_text(const std::string &text)
+  SceneFile read_text(const std::string &text)
   {
     const ScratchFolder scratch;
     const auto          path = scratch.path / "scene.prm";
@@ -26,8 +25,7 @@ namespace
   }
 
   // The InputError message for `text`, which must be one line.
-  std::string
-  error_of(const std::string &text)
+  std::string error_of(const std::string &text)
   {
     try
       {
@@ -42,8 +40,7 @@ namespace
     return "no error";
   }
 
-  bool
-  mentions(const std::string &message, const std::string &part)
+  bool mentions(const std::string &message, const std::string &part)
   {
     const bool found = message.find(part) != std::string::npos;
     if (!found)
@@ -51,8 +48,7 @@ namespace
     return found;
   }
 
-  std::string
-  printed_parameters(const std::string &scene)
+  std::string printed_parameters(const std::string &scene)
   {
     dealii::ParameterHandler prm;
     declare_scene(prm, find_scene(scene));

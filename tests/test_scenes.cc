@@ -14,19 +14,16 @@ using namespace penny;
 
 namespace
 {
-  const std::vector<double> rings = { 0.25, 0.5, 0.75 };
+  const std::vector<double> rings = {0.25, 0.5, 0.75};
 
-  PennySceneResults
-  solve(const PennyGapModelParameters &model, const LoadParameters &load)
+  PennySceneResults solve(const PennyGapModelParameters &model, const LoadParameters &load)
   {
     dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
     return solve_penny_gap(model, load, rings, timer);
   }
 
-  void
-  check_against_closed_form(const PennyGapModelParameters &model,
-                            const LoadParameters          &load,
-                            const double                   tolerance = 1e-4)
+  void check_against_closed_form(const PennyGapModelParameters &model, const LoadParameters &load,
+                                 const double tolerance = 1e-4)
   {
     const PennySceneResults results = solve(model, load);
     for (const auto &ring : results.rings)
@@ -39,8 +36,7 @@ namespace
     BOOST_TEST(results.gap_volume == results.exact_gap_volume, tt::tolerance(tolerance));
   }
 
-  LoadParameters
-  default_load()
+  LoadParameters default_load()
   {
     return *default_parameters().load;
   }
@@ -117,7 +113,7 @@ BOOST_AUTO_TEST_CASE(scene_writes_its_results_as_a_set)
   run_penny_gap_scene(parameters, results, log);
   BOOST_TEST(!std::filesystem::exists(directory));
   results.commit();
-  for (const char *file : { "rings.csv", "summary.csv", "solution.vtu", "solution.pvd" })
+  for (const char *file : {"rings.csv", "summary.csv", "solution.vtu", "solution.pvd"})
     BOOST_TEST(std::filesystem::is_regular_file(directory / file), file);
   BOOST_TEST(log.str().find("|K_I| relative error") != std::string::npos);
 }

@@ -19,8 +19,7 @@ namespace
   const double P       = 3e5;
   const double e_prime = 2e9;
 
-  LoadParameters
-  load(const LoadParameters::Type type, const double a = 1, const std::string &expression = "")
+  LoadParameters load(const LoadParameters::Type type, const double a = 1, const std::string &expression = "")
   {
     LoadParameters parameters;
     parameters.type           = type;
@@ -37,7 +36,7 @@ BOOST_AUTO_TEST_CASE(uniform_load, *boost::unit_test::tolerance(1e-12))
   const SneddonSolution exact(p, c, e_prime);
   BOOST_TEST(exact.stress_intensity_factor() == 2 * P * std::sqrt(c / pi));
   BOOST_TEST(exact.stress_intensity_factor_by_quadrature() == exact.stress_intensity_factor());
-  for (const double r : { 0., 0.3 * c, 0.9 * c, 0.999 * c })
+  for (const double r : {0., 0.3 * c, 0.9 * c, 0.999 * c})
     BOOST_TEST(exact.opening_by_quadrature(r) == exact.opening(r));
   BOOST_TEST(exact.gap_volume() == 16 * P * c * c * c / (3 * e_prime));
   BOOST_TEST(exact.gap_volume_by_quadrature() == exact.gap_volume());
@@ -50,7 +49,7 @@ BOOST_AUTO_TEST_CASE(parabolic_load, *boost::unit_test::tolerance(1e-12))
   const SneddonSolution exact(p, c, e_prime);
   BOOST_TEST(exact.stress_intensity_factor() == 2 * P * std::sqrt(c / pi) * (1 - 2 * c * c / (3 * a * a)));
   BOOST_TEST(exact.stress_intensity_factor_by_quadrature() == exact.stress_intensity_factor());
-  for (const double r : { 0., 0.5 * c, 0.99 * c })
+  for (const double r : {0., 0.5 * c, 0.99 * c})
     BOOST_TEST(exact.opening_by_quadrature(r) == exact.opening(r));
   BOOST_TEST(exact.gap_volume_by_quadrature() == exact.gap_volume());
 }

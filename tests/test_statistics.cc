@@ -27,8 +27,7 @@ namespace
 
   // Profile moment m_n = int int (q cos theta)^n C(q) q dq dtheta by 2D
   // quadrature of the paper's power law, independent of the angular factors.
-  double
-  moment_by_quadrature(const int n, const double weight_power = 0)
+  double moment_by_quadrature(const int n, const double weight_power = 0)
   {
     using boost::math::quadrature::gauss_kronrod;
     const auto C = [](const double q) {
@@ -42,16 +41,12 @@ namespace
           const double q = std::exp(log_q);
           return std::pow(q, n + weight_power + 2) * C(q);
         },
-        std::log(q0),
-        std::log(zeta * q0),
-        15,
-        1e-14);
+        std::log(q0), std::log(zeta * q0), 15, 1e-14);
     return angular * radial;
   }
 
   // Surface and pressure moments for the consistent-convention check.
-  SpectralMoments
-  test_moments()
+  SpectralMoments test_moments()
   {
     return spectral_moments(power_law_spectrum(H, q0, zeta, h0));
   }
@@ -61,8 +56,8 @@ BOOST_AUTO_TEST_CASE(power_law_moments_closed_form)
 {
   // m_k = gamma_k H h0^2 q0^k (zeta^(k-2H) - 1)/(k - 2H), gamma = 1, 1/2, 3/8, 5/16.
   const SpectralMoments m       = test_moments();
-  const double          got[]   = { m.m0, m.m2, m.m4, m.m6 };
-  const double          gamma[] = { 1, 0.5, 0.375, 0.3125 };
+  const double          got[]   = {m.m0, m.m2, m.m4, m.m6};
+  const double          gamma[] = {1, 0.5, 0.375, 0.3125};
   for (int i = 0; i < 4; ++i)
     {
       const int    k = 2 * i;
@@ -91,7 +86,7 @@ BOOST_AUTO_TEST_CASE(tabulated_spectrum_moments)
 
   // A roll-off plateau C0 on [q0, 10 q0], then q^-3: m0 by hand.
   const double        C0 = 1e-20;
-  const PowerSpectrum roll_off{ { q0, 10 * q0, 100 * q0 }, { C0, C0, C0 * 1e-3 } };
+  const PowerSpectrum roll_off{{q0, 10 * q0, 100 * q0}, {C0, C0, C0 * 1e-3}};
   const double        plateau = 2 * M_PI * C0 * (std::pow(10 * q0, 2) - q0 * q0) / 2;
   const double        tail    = 2 * M_PI * C0 * std::pow(10 * q0, 3) * (1 / (10 * q0) - 1 / (100 * q0));
   BOOST_TEST(spectral_moments(roll_off).m0 == plateau + tail, tt::tolerance(1e-13));
@@ -110,9 +105,8 @@ BOOST_AUTO_TEST_CASE(spectrum_file)
 
   std::ofstream(file) << "1e3 2e-20\n1e2 2e-23\n";
   BOOST_CHECK_EXCEPTION(
-      read_power_spectrum(file.string(), "Roughness/Spectrum file"), InputError, [](const InputError &e) {
-        return std::string(e.what()).find("line 2") != std::string::npos;
-      });
+      read_power_spectrum(file.string(), "Roughness/Spectrum file"), InputError,
+      [](const InputError &e) { return std::string(e.what()).find("line 2") != std::string::npos; });
   std::ofstream(file) << "1e3 abc\n";
   BOOST_CHECK_THROW(read_power_spectrum(file.string(), "Roughness/Spectrum file"), InputError);
   std::filesystem::remove(file);
@@ -154,8 +148,8 @@ BOOST_AUTO_TEST_CASE(pressure_summits_both_conventions)
 BOOST_AUTO_TEST_CASE(theta_fit)
 {
   // Over zeta in [1e12, 1e16] the finite-bandwidth corrections are below 1e-3 (2e-4 at H = 0.9).
-  for (const double hurst : { 0.25, 0.4, 0.5, 0.6, 0.75, 0.9 })
-    for (const Convention convention : { Convention::paper, Convention::consistent })
+  for (const double hurst : {0.25, 0.4, 0.5, 0.6, 0.75, 0.9})
+    for (const Convention convention : {Convention::paper, Convention::consistent})
       BOOST_TEST(std::abs(fitted_scaling_exponent(hurst, 1e12, 1e16, 41, convention) -
                           scaling_exponent(hurst)) < 1e-3);
   BOOST_TEST(scaling_exponent(0.75) == 0.2, tt::tolerance(1e-15));
@@ -163,10 +157,10 @@ BOOST_AUTO_TEST_CASE(theta_fit)
 
 BOOST_AUTO_TEST_CASE(linear_law_closed_form_against_quadrature)
 {
-  for (const double adhesion : { 0., 0.3, 1., 2.5, 5. })
+  for (const double adhesion : {0., 0.3, 1., 2.5, 5.})
     for (double p_bar = -4; p_bar <= 6; p_bar += 0.5)
       {
-        const GapPopulation gaps{ std::sqrt(2 * M_PI), adhesion };
+        const GapPopulation gaps{std::sqrt(2 * M_PI), adhesion};
         BOOST_TEST(noncontact_area(gaps, linear_gap_law(adhesion), p_bar) ==
                        linear_law_noncontact_area(gaps, p_bar),
                    tt::tolerance(1e-10));
@@ -176,12 +170,12 @@ BOOST_AUTO_TEST_CASE(linear_law_closed_form_against_quadrature)
 BOOST_AUTO_TEST_CASE(paper_normalisation)
 {
   // No adhesion, no load: all of the nominal area is gap.
-  BOOST_TEST(linear_law_noncontact_area({ paper_population(0.5, 1e3).prefactor, 0 }, 0) == 1,
+  BOOST_TEST(linear_law_noncontact_area({paper_population(0.5, 1e3).prefactor, 0}, 0) == 1,
              tt::tolerance(1e-15));
   BOOST_TEST(paper_population(0.75, 1).adhesion == 1);
   BOOST_TEST(paper_population(0.75, 1e5).adhesion == 10, tt::tolerance(1e-14));
   // exp(-x^2/2) - x sqrt(pi/2) erfc(x/sqrt 2) at x = 5: full contact.
-  const double area = linear_law_noncontact_area({ std::sqrt(2 * M_PI), 5 }, 0);
+  const double area = linear_law_noncontact_area({std::sqrt(2 * M_PI), 5}, 0);
   BOOST_TEST(area == std::exp(-12.5) - 5 * std::sqrt(M_PI / 2) * std::erfc(5 / std::sqrt(2.)),
              tt::tolerance(1e-9));
   BOOST_TEST(area < 1e-6);
@@ -191,14 +185,14 @@ BOOST_AUTO_TEST_CASE(paper_normalisation)
 BOOST_AUTO_TEST_CASE(exact_gap_law_properties)
 {
   // At P = p0 the gap has c_min, and c_min^2/(3 R_p p0) = 1/5 exactly.
-  for (const double adhesion : { 0.1, 1., 5. })
+  for (const double adhesion : {0.1, 1., 5.})
     {
       const GapAreaLaw law = penny::exact_gap_law(adhesion);
       BOOST_TEST(law(adhesion) == adhesion / 5, tt::tolerance(1e-10));
       // The exact gap is larger than the linear law's and tends to c^2 = 3 R_p P.
       BOOST_TEST(law(adhesion + 1) > 1.);
       BOOST_TEST(law(1e4 * adhesion) / (1e4 * adhesion) == 1, tt::tolerance(2e-2 / std::sqrt(1e4)));
-      const GapPopulation gaps{ std::sqrt(2 * M_PI), adhesion };
+      const GapPopulation gaps{std::sqrt(2 * M_PI), adhesion};
       BOOST_TEST(noncontact_area(gaps, law, 0) > linear_law_noncontact_area(gaps, 0));
     }
   BOOST_TEST(penny::exact_gap_law(0)(2.) == 2.);

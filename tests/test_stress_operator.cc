@@ -31,8 +31,7 @@ namespace
   {
     double a, b;
     UniformStrain(const double a, const double b) : Function<2>(2), a(a), b(b) {}
-    double
-    value(const Point<2> &x, const unsigned int component) const override
+    double value(const Point<2> &x, const unsigned int component) const override
     {
       return component == 0 ? a * x[0] : b * x[1];
     }
@@ -60,10 +59,10 @@ BOOST_AUTO_TEST_CASE(uniform_stress_state)
   DisplacementVector u(dofs.locally_owned_dofs(), relevant, MPI_COMM_WORLD);
   u = owned;
 
-  const double    s_rr = lambda * (2 * a + b) + 2 * mu * a;
-  const QGauss<2> quadrature(3);
-  FEValues<2>     fe_values(
-      system.get_fe(), quadrature, update_values | update_gradients | update_quadrature_points);
+  const double              s_rr = lambda * (2 * a + b) + 2 * mu * a;
+  const QGauss<2>           quadrature(3);
+  FEValues<2>               fe_values(system.get_fe(), quadrature,
+                                      update_values | update_gradients | update_quadrature_points);
   std::vector<Tensor<2, 2>> grad(quadrature.size());
   std::vector<Tensor<1, 2>> value(quadrature.size());
   double                    deviation = 0;
@@ -77,11 +76,8 @@ BOOST_AUTO_TEST_CASE(uniform_stress_state)
           {
             const Strain s = system.get_elasticity().stress(
                 strain(Axisymmetric::gradient(grad[q], value[q], fe_values.quadrature_point(q))));
-            deviation = std::max({ deviation,
-                                   std::abs(s[0][0] - s_rr),
-                                   std::abs(s[2][2] - s_rr),
-                                   std::abs(s[1][1]),
-                                   std::abs(s[0][1]) });
+            deviation = std::max({deviation, std::abs(s[0][0] - s_rr), std::abs(s[2][2] - s_rr),
+                                  std::abs(s[1][1]), std::abs(s[0][1])});
           }
       }
   BOOST_TEST(Utilities::MPI::max(deviation, MPI_COMM_WORLD) < 1e-9 * s_rr);
@@ -90,7 +86,7 @@ BOOST_AUTO_TEST_CASE(uniform_stress_state)
   const DomainIntegral<Axisymmetric> j_integral(system, model.material.plane_strain_modulus());
   const double                       c       = model.geometry.gap_radius;
   const double                       j_scale = s_rr * s_rr / model.material.youngs_modulus * c;
-  for (const double rho : { 0.25, 0.5, 0.75 })
+  for (const double rho : {0.25, 0.5, 0.75})
     BOOST_TEST(std::abs(j_integral.energy_release_rate(
                    u, no_load, RingExtension<2>(gap.crack_tip(), rho * c, c))) < 1e-10 * j_scale);
 }
@@ -100,15 +96,15 @@ BOOST_AUTO_TEST_CASE(hoop_strain_on_axis)
 {
   Tensor<2, 2> grad;
   grad[0][0] = 0.25;
-  BOOST_TEST(Axisymmetric::gradient(grad, Tensor<1, 2>({ 0., 0. }), Point<2>(0, 1))[2][2] == 0.25);
-  BOOST_TEST(Axisymmetric::gradient(grad, Tensor<1, 2>({ 0.5, 0. }), Point<2>(2, 1))[2][2] == 0.25);
-  BOOST_TEST(PlaneStrain::gradient(grad, Tensor<1, 2>({ 0.5, 0. }), Point<2>(2, 1))[2][2] == 0.);
+  BOOST_TEST(Axisymmetric::gradient(grad, Tensor<1, 2>({0., 0.}), Point<2>(0, 1))[2][2] == 0.25);
+  BOOST_TEST(Axisymmetric::gradient(grad, Tensor<1, 2>({0.5, 0.}), Point<2>(2, 1))[2][2] == 0.25);
+  BOOST_TEST(PlaneStrain::gradient(grad, Tensor<1, 2>({0.5, 0.}), Point<2>(2, 1))[2][2] == 0.);
 }
 
 // sigma = lambda tr(e) I + 2 mu e, and von Mises of a uniaxial stress is its value.
 BOOST_AUTO_TEST_CASE(hooke_and_von_mises)
 {
-  const IsotropicElasticity elasticity{ 2., 3. };
+  const IsotropicElasticity elasticity{2., 3.};
   Strain                    e;
   e[0][0]            = 1e-3;
   e[0][1]            = 2e-3;

@@ -12,8 +12,7 @@
 #include <string>
 
 // The parameters `scene` reads, at their declared defaults.
-inline penny::Parameters
-default_parameters(const std::string &scene = "penny-gap")
+inline penny::Parameters default_parameters(const std::string &scene = "penny-gap")
 {
   const penny::Scene      &entry = penny::find_scene(scene);
   dealii::ParameterHandler prm;
@@ -22,8 +21,8 @@ default_parameters(const std::string &scene = "penny-gap")
 }
 
 // The default penny-gap model with tip cells c/2^tip_levels wide.
-inline penny::PennyGapModelParameters
-test_size_model(const unsigned int tip_levels, const unsigned int degree)
+inline penny::PennyGapModelParameters test_size_model(const unsigned int tip_levels,
+                                                      const unsigned int degree)
 {
   penny::PennyGapModelParameters model = penny::penny_gap_model(default_parameters());
   model.mesh.tip_levels                = tip_levels;

@@ -10,8 +10,7 @@
 
 namespace
 {
-  void
-  print_usage(std::ostream &out)
+  void print_usage(std::ostream &out)
   {
     out << "Usage: penny SCENE.prm                  run the scene described by the parameter file\n"
            "       penny --print-parameters [SCENE] the entries SCENE reads, with defaults and "
@@ -29,8 +28,7 @@ namespace
   }
 } // namespace
 
-int
-main(int argc, char **argv)
+int main(int argc, char **argv)
 {
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   const std::string                        argument = argc >= 2 ? argv[1] : "";
@@ -62,9 +60,11 @@ main(int argc, char **argv)
       if (!verdict.passed)
         {
           if (speaks)
-            std::cerr << "penny: FAIL: " << verdict.reason << std::endl;
+            std::cerr << "penny: FAIL: " << verdict.message << std::endl;
           return 1;
         }
+      if (!verdict.message.empty())
+        log << "PASS: " << verdict.message << std::endl;
     }
   catch (const penny::InputError &error)
     {

@@ -11,11 +11,8 @@ namespace penny
   // Calls f(cell, fe_face) with `fe_face` reinitialised on every locally
   // owned face on boundary `id`.
   template <int dim, typename F>
-  void
-  for_each_boundary_face(const dealii::DoFHandler<dim>   &dof_handler,
-                         const dealii::types::boundary_id id,
-                         dealii::FEFaceValues<dim>       &fe_face,
-                         F                              &&f)
+  void for_each_boundary_face(const dealii::DoFHandler<dim> &dof_handler, const dealii::types::boundary_id id,
+                              dealii::FEFaceValues<dim> &fe_face, F &&f)
   {
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())

@@ -28,8 +28,8 @@ namespace penny
   {
     static constexpr int dim = 2;
 
-    static Tensor3
-    gradient(const dealii::Tensor<2, 2> &grad_v, const dealii::Tensor<1, 2> &v, const Point<2> &x)
+    static Tensor3 gradient(const dealii::Tensor<2, 2> &grad_v, const dealii::Tensor<1, 2> &v,
+                            const Point<2> &x)
     {
       Tensor3 g;
       for (unsigned int i = 0; i < 2; ++i)
@@ -40,19 +40,15 @@ namespace penny
       return g;
     }
 
-    static double
-    measure(const Point<2> &x)
-    {
-      return x[0];
-    }
+    static double measure(const Point<2> &x) { return x[0]; }
   };
 
   struct PlaneStrain
   {
     static constexpr int dim = 2;
 
-    static Tensor3
-    gradient(const dealii::Tensor<2, 2> &grad_v, const dealii::Tensor<1, 2> &, const Point<2> &)
+    static Tensor3 gradient(const dealii::Tensor<2, 2> &grad_v, const dealii::Tensor<1, 2> &,
+                            const Point<2> &)
     {
       Tensor3 g;
       for (unsigned int i = 0; i < 2; ++i)
@@ -61,28 +57,20 @@ namespace penny
       return g;
     }
 
-    static double
-    measure(const Point<2> &)
-    {
-      return 1;
-    }
+    static double measure(const Point<2> &) { return 1; }
   };
 
   struct Solid
   {
     static constexpr int dim = 3;
 
-    static Tensor3
-    gradient(const dealii::Tensor<2, 3> &grad_v, const dealii::Tensor<1, 3> &, const Point<3> &)
+    static Tensor3 gradient(const dealii::Tensor<2, 3> &grad_v, const dealii::Tensor<1, 3> &,
+                            const Point<3> &)
     {
       return grad_v;
     }
 
-    static double
-    measure(const Point<3> &)
-    {
-      return 1;
-    }
+    static double measure(const Point<3> &) { return 1; }
   };
 
   // Lame constants (Pa).
@@ -90,21 +78,18 @@ namespace penny
   {
     double lambda, mu;
 
-    Strain
-    stress(const Strain &strain) const
+    Strain stress(const Strain &strain) const
     {
       return lambda * dealii::trace(strain) * dealii::unit_symmetric_tensor<3>() + 2 * mu * strain;
     }
   };
 
-  inline Strain
-  strain(const Tensor3 &gradient)
+  inline Strain strain(const Tensor3 &gradient)
   {
     return dealii::symmetrize(gradient);
   }
 
-  inline double
-  von_mises(const Strain &s)
+  inline double von_mises(const Strain &s)
   {
     return std::sqrt(1.5 * (dealii::deviator(s) * dealii::deviator(s)));
   }

@@ -25,10 +25,8 @@ namespace penny
     } silenced_cerr;
     try
       {
-        expression->initialize(
-            "r",
-            load.expression,
-            { { "c", gap_radius }, { "P", load.peak_tension }, { "pi", dealii::numbers::PI } });
+        expression->initialize("r", load.expression,
+                               {{"c", gap_radius}, {"P", load.peak_tension}, {"pi", dealii::numbers::PI}});
         (*this)(0.5 * gap_radius); // muparser reports some errors only when evaluated
       }
     catch (const dealii::ExceptionBase &)
@@ -38,8 +36,7 @@ namespace penny
       }
   }
 
-  FaceLoad
-  FaceLoad::unit_uniform()
+  FaceLoad FaceLoad::unit_uniform()
   {
     LoadParameters load;
     load.type           = Type::uniform;
@@ -48,8 +45,7 @@ namespace penny
     return FaceLoad(load, 1);
   }
 
-  FaceLoad
-  FaceLoad::unit_quadratic()
+  FaceLoad FaceLoad::unit_quadratic()
   {
     LoadParameters load;
     load.type       = Type::expression;
@@ -57,8 +53,7 @@ namespace penny
     return FaceLoad(load, 1);
   }
 
-  double
-  FaceLoad::operator()(const double r) const
+  double FaceLoad::operator()(const double r) const
   {
     switch (load.type)
       {

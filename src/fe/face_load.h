@@ -23,21 +23,9 @@ namespace penny
 
     double operator()(double r) const;
 
-    Type
-    type() const
-    {
-      return load.type;
-    }
-    double
-    peak_tension() const
-    {
-      return load.peak_tension;
-    }
-    double
-    tension_radius() const
-    {
-      return load.tension_radius;
-    }
+    Type   type() const { return load.type; }
+    double peak_tension() const { return load.peak_tension; }
+    double tension_radius() const { return load.tension_radius; }
 
   private:
     LoadParameters                             load;

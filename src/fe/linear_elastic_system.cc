@@ -27,25 +27,21 @@ namespace penny
                                                        const LinearSolverParameters &linear_solver,
                                                        std::vector<ZeroDisplacement> zero_displacements,
                                                        TimerOutput                  &timer)
-      : fe(FE_Q<dim>(degree), dim), elasticity{ material.lame_lambda(), material.lame_mu() },
+      : fe(FE_Q<dim>(degree), dim), elasticity{material.lame_lambda(), material.lame_mu()},
         linear_solver(linear_solver), zero_displacements(std::move(zero_displacements)), timer(timer),
         dof_handler(triangulation)
   {
     setup();
   }
 
-  template <typename Kinematics>
-  void
-  LinearElasticSystem<Kinematics>::setup()
+  template <typename Kinematics> void LinearElasticSystem<Kinematics>::setup()
   {
     distribute_and_constrain();
     assemble_matrix();
     factorise();
   }
 
-  template <typename Kinematics>
-  std::string
-  LinearElasticSystem<Kinematics>::solver_name() const
+  template <typename Kinematics> std::string LinearElasticSystem<Kinematics>::solver_name() const
   {
     if (linear_solver.type == LinearSolverParameters::Type::cg_amg)
       return "CG + AMG";
@@ -53,9 +49,7 @@ namespace penny
   }
 
   // The zero displacements and the hanging nodes of a locally refined mesh.
-  template <typename Kinematics>
-  void
-  LinearElasticSystem<Kinematics>::distribute_and_constrain()
+  template <typename Kinematics> void LinearElasticSystem<Kinematics>::distribute_and_constrain()
   {
     TimerOutput::Scope scope(timer, "setup");
     // Solvers built on a previous matrix go before it does.
@@ -69,8 +63,8 @@ namespace penny
     constraints.reinit(relevant);
     DoFTools::make_hanging_node_constraints(dof_handler, constraints);
     for (const auto &[boundary, components] : zero_displacements)
-      VectorTools::interpolate_boundary_values(
-          dof_handler, boundary, Functions::ZeroFunction<dim>(dim), constraints, components);
+      VectorTools::interpolate_boundary_values(dof_handler, boundary, Functions::ZeroFunction<dim>(dim),
+                                               constraints, components);
     constraints.close();
 
     DynamicSparsityPattern pattern(relevant);
@@ -86,14 +80,12 @@ namespace penny
   }
 
   // a(u, v) = int sigma(u):e(v) dmu, dmu the volume element of the kinematics.
-  template <typename Kinematics>
-  void
-  LinearElasticSystem<Kinematics>::assemble_matrix()
+  template <typename Kinematics> void LinearElasticSystem<Kinematics>::assemble_matrix()
   {
-    TimerOutput::Scope scope(timer, "assembly");
-    const QGauss<dim>  quadrature(fe.degree + 2);
-    FEValues<dim>      fe_values(
-        fe, quadrature, update_values | update_gradients | update_quadrature_points | update_JxW_values);
+    TimerOutput::Scope                   scope(timer, "assembly");
+    const QGauss<dim>                    quadrature(fe.degree + 2);
+    FEValues<dim>                        fe_values(fe, quadrature,
+                                                   update_values | update_gradients | update_quadrature_points | update_JxW_values);
     const FEValuesExtractors::Vector     displacement(0);
     const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
     FullMatrix<double>                   cell_matrix(dofs_per_cell, dofs_per_cell);
@@ -109,8 +101,8 @@ namespace penny
             {
               const Point<dim> &x = fe_values.quadrature_point(q);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
-                shape_strain[i] = strain(Kinematics::gradient(
-                    fe_values[displacement].gradient(i, q), fe_values[displacement].value(i, q), x));
+                shape_strain[i] = strain(Kinematics::gradient(fe_values[displacement].gradient(i, q),
+                                                              fe_values[displacement].value(i, q), x));
               const double dmu = Kinematics::measure(x) * fe_values.JxW(q);
               for (unsigned int i = 0; i < dofs_per_cell; ++i)
                 {
@@ -128,9 +120,7 @@ namespace penny
     stiffness.compress(VectorOperation::add);
   }
 
-  template <typename Kinematics>
-  void
-  LinearElasticSystem<Kinematics>::factorise()
+  template <typename Kinematics> void LinearElasticSystem<Kinematics>::factorise()
   {
     TimerOutput::Scope scope(timer, "solve");
     if (linear_solver.type == LinearSolverParameters::Type::direct)
@@ -173,15 +163,14 @@ namespace penny
   }
 
   template <typename Kinematics>
-  void
-  LinearElasticSystem<Kinematics>::apply_inverse(TrilinosWrappers::MPI::Vector       &x,
-                                                 const TrilinosWrappers::MPI::Vector &b)
+  void LinearElasticSystem<Kinematics>::apply_inverse(TrilinosWrappers::MPI::Vector       &x,
+                                                      const TrilinosWrappers::MPI::Vector &b)
   {
     if (linear_solver.type == LinearSolverParameters::Type::cg_amg)
       {
         // CG aims at half the tolerance: the residual recomputed in solve() differs by rounding.
-        SolverControl control(
-            linear_solver.max_iterations, 0.5 * linear_solver.tolerance * b.l2_norm(), false, false);
+        SolverControl control(linear_solver.max_iterations, 0.5 * linear_solver.tolerance * b.l2_norm(),
+                              false, false);
         SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
         cg.connect_condition_number_slot([this](const double kappa) { report.condition_estimate = kappa; });
         try
@@ -207,31 +196,31 @@ namespace penny
   }
 
   template <typename Kinematics>
-  TrilinosWrappers::MPI::Vector
-  LinearElasticSystem<Kinematics>::load_vector(const types::boundary_id face, const Traction &traction) const
+  TrilinosWrappers::MPI::Vector LinearElasticSystem<Kinematics>::load_vector(const types::boundary_id face,
+                                                                             const Traction &traction) const
   {
-    TimerOutput::Scope            scope(timer, "assembly");
-    TrilinosWrappers::MPI::Vector rhs(owned, get_communicator());
-    const QGauss<dim - 1>         face_quadrature(fe.degree + 2);
-    FEFaceValues<dim>             fe_face(
-        fe, face_quadrature, update_values | update_quadrature_points | update_JxW_values);
+    TimerOutput::Scope                   scope(timer, "assembly");
+    TrilinosWrappers::MPI::Vector        rhs(owned, get_communicator());
+    const QGauss<dim - 1>                face_quadrature(fe.degree + 2);
+    FEFaceValues<dim>                    fe_face(fe, face_quadrature,
+                                                 update_values | update_quadrature_points | update_JxW_values);
     const FEValuesExtractors::Vector     displacement(0);
     Vector<double>                       cell_rhs(fe.n_dofs_per_cell());
     std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
-    for_each_boundary_face(
-        dof_handler, face, fe_face, [&](const auto &cell, const FEFaceValues<dim> &values) {
-          cell_rhs = 0;
-          for (const unsigned int q : values.quadrature_point_indices())
-            {
-              const Point<dim> &x = values.quadrature_point(q);
-              const double      t = traction(x);
-              for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
-                cell_rhs(i) +=
-                    t * values[displacement].value(i, q)[dim - 1] * Kinematics::measure(x) * values.JxW(q);
-            }
-          cell->get_dof_indices(local_dofs);
-          constraints.distribute_local_to_global(cell_rhs, local_dofs, rhs);
-        });
+    for_each_boundary_face(dof_handler, face, fe_face,
+                           [&](const auto &cell, const FEFaceValues<dim> &values) {
+                             cell_rhs = 0;
+                             for (const unsigned int q : values.quadrature_point_indices())
+                               {
+                                 const Point<dim> &x = values.quadrature_point(q);
+                                 const double      t = traction(x);
+                                 for (unsigned int i = 0; i < fe.n_dofs_per_cell(); ++i)
+                                   cell_rhs(i) += t * values[displacement].value(i, q)[dim - 1] *
+                                                  Kinematics::measure(x) * values.JxW(q);
+                               }
+                             cell->get_dof_indices(local_dofs);
+                             constraints.distribute_local_to_global(cell_rhs, local_dofs, rhs);
+                           });
     rhs.compress(VectorOperation::add);
     if (!std::isfinite(rhs.l2_norm()))
       throw std::runtime_error("assembly: the load vector holds NaN or Inf (check Load/Expression)");
@@ -239,15 +228,14 @@ namespace penny
   }
 
   template <typename Kinematics>
-  DisplacementVector
-  LinearElasticSystem<Kinematics>::solve(const types::boundary_id face, const Traction &traction)
+  DisplacementVector LinearElasticSystem<Kinematics>::solve(const types::boundary_id face,
+                                                            const Traction          &traction)
   {
     return solve(load_vector(face, traction));
   }
 
   template <typename Kinematics>
-  DisplacementVector
-  LinearElasticSystem<Kinematics>::solve(const TrilinosWrappers::MPI::Vector &rhs)
+  DisplacementVector LinearElasticSystem<Kinematics>::solve(const TrilinosWrappers::MPI::Vector &rhs)
   {
     TimerOutput::Scope            scope(timer, "solve");
     TrilinosWrappers::MPI::Vector u(owned, get_communicator());

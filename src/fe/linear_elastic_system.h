@@ -57,12 +57,9 @@ namespace penny
     // model and opens the gap (Pa).
     using Traction = std::function<double(const dealii::Point<dim> &)>;
 
-    LinearElasticSystem(const dealii::Triangulation<dim> &triangulation,
-                        unsigned int                      degree,
-                        const MaterialParameters         &material,
-                        const LinearSolverParameters     &linear_solver,
-                        std::vector<ZeroDisplacement>     zero_displacements,
-                        dealii::TimerOutput              &timer);
+    LinearElasticSystem(const dealii::Triangulation<dim> &triangulation, unsigned int degree,
+                        const MaterialParameters &material, const LinearSolverParameters &linear_solver,
+                        std::vector<ZeroDisplacement> zero_displacements, dealii::TimerOutput &timer);
 
     // Distributes the degrees of freedom, assembles and factorises; again
     // after the triangulation was refined.
@@ -78,36 +75,12 @@ namespace penny
     // Both together: the displacement under the traction t on `face`.
     DisplacementVector solve(dealii::types::boundary_id face, const Traction &traction);
 
-    const SolveReport &
-    last_solve() const
-    {
-      return report;
-    }
-    const dealii::DoFHandler<dim> &
-    get_dof_handler() const
-    {
-      return dof_handler;
-    }
-    const dealii::FESystem<dim> &
-    get_fe() const
-    {
-      return fe;
-    }
-    const IsotropicElasticity &
-    get_elasticity() const
-    {
-      return elasticity;
-    }
-    const dealii::Triangulation<dim> &
-    get_triangulation() const
-    {
-      return dof_handler.get_triangulation();
-    }
-    MPI_Comm
-    get_communicator() const
-    {
-      return get_triangulation().get_communicator();
-    }
+    const SolveReport                &last_solve() const { return report; }
+    const dealii::DoFHandler<dim>    &get_dof_handler() const { return dof_handler; }
+    const dealii::FESystem<dim>      &get_fe() const { return fe; }
+    const IsotropicElasticity        &get_elasticity() const { return elasticity; }
+    const dealii::Triangulation<dim> &get_triangulation() const { return dof_handler.get_triangulation(); }
+    MPI_Comm get_communicator() const { return get_triangulation().get_communicator(); }
 
     // "UMFPACK" (one MPI rank), "MUMPS" (several) or "CG + AMG".
     std::string solver_name() const;

@@ -24,8 +24,7 @@ namespace penny
   namespace
   {
     // Distance from point p to the axis-aligned box of a cell (0 inside).
-    double
-    distance_to_cell(const Point<2> &p, const Triangulation<2>::active_cell_iterator &cell)
+    double distance_to_cell(const Point<2> &p, const Triangulation<2>::active_cell_iterator &cell)
     {
       const BoundingBox<2> box = cell->bounding_box();
       double               d2  = 0;
@@ -33,7 +32,7 @@ namespace penny
         {
           const double below = box.lower_bound(i) - p[i];
           const double above = p[i] - box.upper_bound(i);
-          const double gap   = std::max({ below, above, 0. });
+          const double gap   = std::max({below, above, 0.});
           d2 += gap * gap;
         }
       return std::sqrt(d2);
@@ -41,8 +40,7 @@ namespace penny
 
     // Steps of width `s` filling [0, length >= 2 s]; the remainder widens the
     // last one, never the first.
-    std::vector<double>
-    coarse_steps(const double length, const double s)
+    std::vector<double> coarse_steps(const double length, const double s)
     {
       const unsigned int  n = std::max(1u, static_cast<unsigned int>(std::floor(length / s + 1e-12)));
       std::vector<double> steps(n, s);
@@ -54,12 +52,11 @@ namespace penny
     // width not above min(R, H)/2, so that the first coarse cell is [0, s]^2 and
     // c falls on one of its dyadic vertices), then every
     // cell nearer to the tip than `grading_distance` of its own widths is split
-    // until the tip cells are c/2^levels wide. Far from the tip cells double in
+    // until the tip cells are c/2^levels wide, and every cell over the gap face
+    // until it is c/2^(gap face levels) wide. Far from the tip cells double in
     // width every few cells: a geometric grading, ratio 2, out to R and H.
-    void
-    generate_quadtree(Triangulation<2>         &triangulation,
-                      const GeometryParameters &physical_geometry,
-                      const MeshParameters     &mesh)
+    void generate_quadtree(Triangulation<2> &triangulation, const GeometryParameters &physical_geometry,
+                           const MeshParameters &mesh)
     {
       // Built on a domain whose part above z0 is compressed along z by the aspect
       // ratio, then stretched back: cells above z0 become that many times
@@ -74,13 +71,12 @@ namespace penny
           std::pow(2.,
                    std::floor(std::log2(std::min(geometry.domain_radius, geometry.domain_height) / (2 * c))));
       GridGenerator::subdivided_hyper_rectangle(
-          triangulation,
-          { coarse_steps(geometry.domain_radius, s), coarse_steps(geometry.domain_height, s) },
-          Point<2>(0, 0),
-          Point<2>(geometry.domain_radius, geometry.domain_height));
+          triangulation, {coarse_steps(geometry.domain_radius, s), coarse_steps(geometry.domain_height, s)},
+          Point<2>(0, 0), Point<2>(geometry.domain_radius, geometry.domain_height));
 
-      const Point<2> tip       = crack_tip(geometry);
-      const double   tip_width = c / std::pow(2., mesh.tip_levels);
+      const Point<2> tip        = crack_tip(geometry);
+      const double   tip_width  = c / std::pow(2., mesh.tip_levels);
+      const double   face_width = c / std::pow(2., mesh.gap_face_levels);
       while (true)
         {
           bool refined = false;
@@ -90,8 +86,14 @@ namespace penny
               // Ties (distance exactly a multiple of the width) are common on a
               // quadtree; the relative margin decides them the same way for
               // every c, so meshes built for different c are exactly similar.
-              if (width > tip_width * (1 + 1e-9) &&
-                  distance_to_cell(tip, cell) < mesh.grading_distance * width * (1 - 1e-9))
+              const bool near_tip = width > tip_width * (1 + 1e-9) &&
+                                    distance_to_cell(tip, cell) < mesh.grading_distance * width * (1 - 1e-9);
+              // The cells over the gap face, within c of it, resolve the
+              // opening: without them w(0) is 20 times less accurate than K_I.
+              const bool over_face = width > face_width * (1 + 1e-9) &&
+                                     cell->bounding_box().lower_bound(0) < c * (1 - 1e-9) &&
+                                     cell->bounding_box().lower_bound(1) < c * (1 - 1e-9);
+              if (near_tip || over_face)
                 {
                   cell->set_refine_flag();
                   refined = true;
@@ -120,21 +122,20 @@ namespace penny
 
     // Meshes a .geo with gmsh, passing c, R and H as parser numbers (the .geo
     // declares them with DefineConstant), and returns the path of the .msh.
-    std::string
-    mesh_geo_file(const std::string &geo_file, const GeometryParameters &geometry)
+    std::string mesh_geo_file(const std::string &geo_file, const GeometryParameters &geometry)
     {
       const std::string msh_file =
           (std::filesystem::temp_directory_path() / ("penny-" + std::to_string(getpid()) + ".msh")).string();
       // gmsh 4.8 has no parser API: the numbers go in as command-line options.
-      std::vector<std::string> arguments = { "gmsh" };
-      for (const auto &[name, value] : { std::pair<std::string, double>{ "c", geometry.gap_radius },
-                                         { "R", geometry.domain_radius },
-                                         { "H", geometry.domain_height } })
+      std::vector<std::string> arguments = {"gmsh"};
+      for (const auto &[name, value] : {std::pair<std::string, double>{"c", geometry.gap_radius},
+                                        {"R", geometry.domain_radius},
+                                        {"H", geometry.domain_height}})
         {
           std::ostringstream number;
           number.precision(17);
           number << value;
-          arguments.insert(arguments.end(), { "-setnumber", name, number.str() });
+          arguments.insert(arguments.end(), {"-setnumber", name, number.str()});
         }
       std::vector<char *> argv;
       for (auto &argument : arguments)
@@ -157,8 +158,8 @@ namespace penny
       return msh_file;
     }
 
-    void
-    read_gmsh(Triangulation<2> &triangulation, const GeometryParameters &geometry, const MeshParameters &mesh)
+    void read_gmsh(Triangulation<2> &triangulation, const GeometryParameters &geometry,
+                   const MeshParameters &mesh)
     {
       const bool        is_geo   = std::filesystem::path(mesh.mesh_file).extension() == ".geo";
       const std::string msh_file = is_geo ? mesh_geo_file(mesh.mesh_file, geometry) : mesh.mesh_file;
@@ -183,26 +184,22 @@ namespace penny
       for (const auto &face : triangulation.active_face_iterators())
         if (face->at_boundary())
           ids.insert(face->boundary_id());
-      for (const auto id : { boundary_id::symmetry, boundary_id::gap_face, boundary_id::ligament })
+      for (const auto id : {boundary_id::symmetry, boundary_id::gap_face, boundary_id::ligament})
         if (ids.count(id) == 0)
           throw InputError("Mesh/Mesh file = '" + mesh.mesh_file + "' lacks physical curve tag " +
                            std::to_string(id) + " (1 axis, 2 gap face, 3 ligament, 4 far boundary)");
     }
 
-    bool
-    has_vertex_at_tip(const Triangulation<2> &triangulation, const GeometryParameters &geometry)
+    bool has_vertex_at_tip(const Triangulation<2> &triangulation, const GeometryParameters &geometry)
     {
       const Point<2> tip = crack_tip(geometry);
-      return std::any_of(triangulation.get_vertices().begin(),
-                         triangulation.get_vertices().end(),
+      return std::any_of(triangulation.get_vertices().begin(), triangulation.get_vertices().end(),
                          [&](const Point<2> &v) { return v.distance(tip) < 1e-12 * geometry.gap_radius; });
     }
   } // namespace
 
-  void
-  make_penny_gap_mesh(Triangulation<2>         &triangulation,
-                      const GeometryParameters &geometry,
-                      const MeshParameters     &mesh)
+  void make_penny_gap_mesh(Triangulation<2> &triangulation, const GeometryParameters &geometry,
+                           const MeshParameters &mesh)
   {
     if (mesh.generator == MeshParameters::Generator::builtin)
       {

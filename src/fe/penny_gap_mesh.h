@@ -10,15 +10,13 @@
 
 namespace penny
 {
-  inline dealii::Point<2>
-  crack_tip(const GeometryParameters &geometry)
+  inline dealii::Point<2> crack_tip(const GeometryParameters &geometry)
   {
-    return { geometry.gap_radius, 0 };
+    return {geometry.gap_radius, 0};
   }
 
   // Builds the scene's mesh (built-in generator or gmsh file), then applies the
   // global refinements. Throws InputError for a mesh that does not fit.
-  void make_penny_gap_mesh(dealii::Triangulation<2> &triangulation,
-                           const GeometryParameters &geometry,
-                           const MeshParameters     &mesh);
+  void make_penny_gap_mesh(dealii::Triangulation<2> &triangulation, const GeometryParameters &geometry,
+                           const MeshParameters &mesh);
 } // namespace penny

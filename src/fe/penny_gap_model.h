@@ -33,8 +33,7 @@ namespace penny
 
   // The face load p(r) as the normal traction at a point (r, 0) of the gap
   // face; `load` must outlive the function.
-  inline LinearElasticSystem<Axisymmetric>::Traction
-  face_traction(const FaceLoad &load)
+  inline LinearElasticSystem<Axisymmetric>::Traction face_traction(const FaceLoad &load)
   {
     return [&load](const dealii::Point<2> &x) { return load(x[0]); };
   }
@@ -58,26 +57,10 @@ namespace penny
     // Volume between the two faces, 2 int_0^c 2 pi r u_z dr (m^3).
     double gap_volume(const DisplacementVector &u) const;
 
-    const LinearElasticSystem<Axisymmetric> &
-    get_system() const
-    {
-      return system;
-    }
-    const MaterialParameters &
-    material() const
-    {
-      return parameters.material;
-    }
-    double
-    gap_radius() const
-    {
-      return parameters.geometry.gap_radius;
-    }
-    dealii::Point<2>
-    crack_tip() const
-    {
-      return { gap_radius(), 0 };
-    }
+    const LinearElasticSystem<Axisymmetric> &get_system() const { return system; }
+    const MaterialParameters                &material() const { return parameters.material; }
+    double                                   gap_radius() const { return parameters.geometry.gap_radius; }
+    dealii::Point<2>                         crack_tip() const { return {gap_radius(), 0}; }
 
   private:
     const PennyGapModelParameters              parameters;

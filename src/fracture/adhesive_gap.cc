@@ -6,14 +6,12 @@
 
 namespace penny
 {
-  double
-  closed_form::adhesive_tension(const double c, const double R_p, const double K_Ic)
+  double closed_form::adhesive_tension(const double c, const double R_p, const double K_Ic)
   {
     return c * c / (3 * R_p) + std::sqrt(M_PI) * K_Ic / (2 * std::sqrt(c));
   }
 
-  std::optional<double>
-  closed_form::stable_gap_radius(const double P, const double R_p, const double K_Ic)
+  std::optional<double> closed_form::stable_gap_radius(const double P, const double R_p, const double K_Ic)
   {
     const double c_min = c_min_factor * adhesion_length(R_p, K_Ic);
     const double p0    = adhesive_tension(c_min, R_p, K_Ic);
@@ -25,14 +23,12 @@ namespace penny
     return root_above(f, c_min, f(c_min), closed_form_root_bits);
   }
 
-  double
-  adhesion_length(const double R_p, const double K_Ic)
+  double adhesion_length(const double R_p, const double K_Ic)
   {
     return std::pow(R_p * K_Ic, 0.4);
   }
 
-  double
-  adhesion_tension(const double R_p, const double K_Ic)
+  double adhesion_tension(const double R_p, const double K_Ic)
   {
     return std::pow(std::pow(K_Ic, 4) / R_p, 0.2);
   }

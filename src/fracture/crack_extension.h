@@ -41,23 +41,20 @@ namespace penny
     }
 
     // The ring profile w(x).
-    double
-    weight(const dealii::Point<dim> &x) const
+    double weight(const dealii::Point<dim> &x) const
     {
       const double s = 1 - x.distance_square(tip) / (rho * rho);
       return s > 0 ? s * s * s * s : 0;
     }
 
-    dealii::Tensor<1, dim>
-    value(const dealii::Point<dim> &x) const override
+    dealii::Tensor<1, dim> value(const dealii::Point<dim> &x) const override
     {
       dealii::Tensor<1, dim> q;
       q[0] = weight(x);
       return q;
     }
 
-    dealii::Tensor<2, dim>
-    gradient(const dealii::Point<dim> &x) const override
+    dealii::Tensor<2, dim> gradient(const dealii::Point<dim> &x) const override
     {
       dealii::Tensor<2, dim> grad_q;
       const double           s = 1 - x.distance_square(tip) / (rho * rho);
@@ -66,17 +63,12 @@ namespace penny
       return grad_q;
     }
 
-    bool
-    may_touch(const typename dealii::Triangulation<dim>::cell_iterator &cell) const override
+    bool may_touch(const typename dealii::Triangulation<dim>::cell_iterator &cell) const override
     {
       return cell->center().distance(tip) <= rho + cell->diameter();
     }
 
-    double
-    front_measure() const override
-    {
-      return measure;
-    }
+    double front_measure() const override { return measure; }
 
   private:
     const dealii::Point<dim> tip;

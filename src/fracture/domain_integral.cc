@@ -21,30 +21,25 @@ namespace penny
   }
 
   template <typename Kinematics>
-  double
-  DomainIntegral<Kinematics>::energy_release_rate(const DisplacementVector  &u,
-                                                  const Traction            &t,
-                                                  const CrackExtension<dim> &q) const
+  double DomainIntegral<Kinematics>::energy_release_rate(const DisplacementVector &u, const Traction &t,
+                                                         const CrackExtension<dim> &q) const
   {
     return bilinear(u, t, u, t, q);
   }
 
   template <typename Kinematics>
-  double
-  DomainIntegral<Kinematics>::stress_intensity_factor(const DisplacementVector  &u,
-                                                      const Traction            &t,
-                                                      const CrackExtension<dim> &q) const
+  double DomainIntegral<Kinematics>::stress_intensity_factor(const DisplacementVector &u, const Traction &t,
+                                                             const CrackExtension<dim> &q) const
   {
     return std::sqrt(e_prime * std::max(energy_release_rate(u, t, q), 0.));
   }
 
   template <typename Kinematics>
-  double
-  DomainIntegral<Kinematics>::signed_stress_intensity_factor(const DisplacementVector  &u,
-                                                             const Traction            &t,
-                                                             const DisplacementVector  &u_ref,
-                                                             const Traction            &t_ref,
-                                                             const CrackExtension<dim> &q) const
+  double DomainIntegral<Kinematics>::signed_stress_intensity_factor(const DisplacementVector  &u,
+                                                                    const Traction            &t,
+                                                                    const DisplacementVector  &u_ref,
+                                                                    const Traction            &t_ref,
+                                                                    const CrackExtension<dim> &q) const
   {
     const double k_ref = stress_intensity_factor(u_ref, t_ref, q);
     if (!(k_ref > 0))
@@ -55,22 +50,19 @@ namespace penny
   // Polarised integrands: sigma(u)_ij v_i,k q_k,j is replaced by the mean of
   // the (u, v) and (v, u) products, W by sigma(u):e(v)/2.
   template <typename Kinematics>
-  double
-  DomainIntegral<Kinematics>::bilinear(const DisplacementVector  &u,
-                                       const Traction            &t_u,
-                                       const DisplacementVector  &v,
-                                       const Traction            &t_v,
-                                       const CrackExtension<dim> &q) const
+  double DomainIntegral<Kinematics>::bilinear(const DisplacementVector &u, const Traction &t_u,
+                                              const DisplacementVector &v, const Traction &t_v,
+                                              const CrackExtension<dim> &q) const
   {
     const auto &fe         = system.get_fe();
     const auto &elasticity = system.get_elasticity();
     // The weight is smooth but only C3 at the edge of its support: a few extra points.
-    const QGauss<dim>     quadrature(fe.degree + 4);
-    const QGauss<dim - 1> face_quadrature(fe.degree + 4);
-    FEValues<dim>         fe_values(
-        fe, quadrature, update_values | update_gradients | update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim> fe_face(
-        fe, face_quadrature, update_gradients | update_quadrature_points | update_JxW_values);
+    const QGauss<dim>                quadrature(fe.degree + 4);
+    const QGauss<dim - 1>            face_quadrature(fe.degree + 4);
+    FEValues<dim>                    fe_values(fe, quadrature,
+                                               update_values | update_gradients | update_quadrature_points | update_JxW_values);
+    FEFaceValues<dim>                fe_face(fe, face_quadrature,
+                                             update_gradients | update_quadrature_points | update_JxW_values);
     const FEValuesExtractors::Vector displacement(0);
     std::vector<Tensor<2, dim>>      grad_u(quadrature.size()), grad_v(quadrature.size());
     std::vector<Tensor<1, dim>>      value_u(quadrature.size()), value_v(quadrature.size());
@@ -104,9 +96,7 @@ namespace penny
       }
 
     double face_term = 0;
-    for_each_boundary_face(system.get_dof_handler(),
-                           boundary_id::gap_face,
-                           fe_face,
+    for_each_boundary_face(system.get_dof_handler(), boundary_id::gap_face, fe_face,
                            [&](const auto &cell, const FEFaceValues<dim> &face) {
                              if (!q.may_touch(cell))
                                return;

@@ -27,28 +27,22 @@ namespace penny
     DomainIntegral(const LinearElasticSystem<Kinematics> &system, double plane_strain_modulus);
 
     // B(u, v) for displacements u, v loaded by the tractions t_u, t_v (J/m^2).
-    double bilinear(const DisplacementVector  &u,
-                    const Traction            &t_u,
-                    const DisplacementVector  &v,
-                    const Traction            &t_v,
-                    const CrackExtension<dim> &q) const;
+    double bilinear(const DisplacementVector &u, const Traction &t_u, const DisplacementVector &v,
+                    const Traction &t_v, const CrackExtension<dim> &q) const;
 
     // G = B(u, u) (J/m^2).
-    double
-    energy_release_rate(const DisplacementVector &u, const Traction &t, const CrackExtension<dim> &q) const;
+    double energy_release_rate(const DisplacementVector &u, const Traction &t,
+                               const CrackExtension<dim> &q) const;
 
     // |K_I| = sqrt(E' G) (Pa m^1/2).
-    double stress_intensity_factor(const DisplacementVector  &u,
-                                   const Traction            &t,
+    double stress_intensity_factor(const DisplacementVector &u, const Traction &t,
                                    const CrackExtension<dim> &q) const;
 
     // Signed K_I = E' B(u, u_ref)/K_ref, with a reference solution u_ref on the
     // same mesh whose K_ref = sqrt(E' B(u_ref, u_ref)) is known to be positive
     // (a tension opening the gap, e.g. uniform pressure).
-    double signed_stress_intensity_factor(const DisplacementVector  &u,
-                                          const Traction            &t,
-                                          const DisplacementVector  &u_ref,
-                                          const Traction            &t_ref,
+    double signed_stress_intensity_factor(const DisplacementVector &u, const Traction &t,
+                                          const DisplacementVector &u_ref, const Traction &t_ref,
                                           const CrackExtension<dim> &q) const;
 
   private:

@@ -12,24 +12,28 @@ namespace penny
   {
   }
 
-  GapFamily::SifsWithReference
-  GapFamily::solve_with_reference(const double c, const FaceLoad &load)
+  GapFamily::SifsWithReference GapFamily::solve_with_reference(const double c, const FaceLoad &load)
   {
     const FaceLoad           reference = FaceLoad::unit_uniform();
     PennyGapModel            gap(model.scaled_to(c), timer);
     const DisplacementVector u     = gap.solve(load);
     const DisplacementVector u_ref = gap.solve(reference);
     solves += 2;
-    TimerOutput::Scope                 scope(timer, "J-integral");
-    const DomainIntegral<Axisymmetric> j_integral(gap.get_system(), model.material.plane_strain_modulus());
-    const RingExtension<2>             ring(gap.crack_tip(), ring_radius * c, c);
-    return { j_integral.stress_intensity_factor(u_ref, face_traction(reference), ring),
-             j_integral.signed_stress_intensity_factor(
-                 u, face_traction(load), u_ref, face_traction(reference), ring) };
+    SifsWithReference sifs;
+    {
+      TimerOutput::Scope                 scope(timer, "J-integral");
+      const DomainIntegral<Axisymmetric> j_integral(gap.get_system(), model.material.plane_strain_modulus());
+      const RingExtension<2>             ring(gap.crack_tip(), ring_radius * c, c);
+      sifs = {j_integral.stress_intensity_factor(u_ref, face_traction(reference), ring),
+              j_integral.signed_stress_intensity_factor(u, face_traction(load), u_ref,
+                                                        face_traction(reference), ring)};
+    }
+    if (evaluated)
+      evaluated(c);
+    return sifs;
   }
 
-  double
-  GapFamily::parabolic_stress_intensity_factor(const double c, const double P, const double a)
+  double GapFamily::parabolic_stress_intensity_factor(const double c, const double P, const double a)
   {
     LoadParameters parabola;
     parabola.type           = LoadParameters::Type::parabolic;
@@ -38,10 +42,9 @@ namespace penny
     return solve_with_reference(c, FaceLoad(parabola, c)).load;
   }
 
-  UnitLoadSifs
-  GapFamily::unit_load_sifs(const double c)
+  UnitLoadSifs GapFamily::unit_load_sifs(const double c)
   {
     const SifsWithReference K = solve_with_reference(c, FaceLoad::unit_quadratic());
-    return { K.reference, K.load };
+    return {K.reference, K.load};
   }
 } // namespace penny

@@ -9,6 +9,8 @@
 
 #include <deal.II/base/timer.h>
 
+#include <functional>
+
 namespace penny
 {
   // K_I (Pa m^1/2) of the unit load cases p = 1 Pa and p = r^2 (Pa/m^2) on a gap
@@ -33,11 +35,10 @@ namespace penny
     // Both unit load cases from one factorisation.
     UnitLoadSifs unit_load_sifs(double c);
 
-    unsigned int
-    n_solves() const
-    {
-      return solves;
-    }
+    unsigned int n_solves() const { return solves; }
+
+    // `observer(c)` is called after each evaluation, with its gap radius.
+    void observe(std::function<void(double c)> observer) { evaluated = std::move(observer); }
 
   private:
     // |K_I| of unit pressure (the reference) and the signed K_I of `load`,
@@ -53,5 +54,6 @@ namespace penny
     const double                  ring_radius;
     dealii::TimerOutput          &timer;
     unsigned int                  solves = 0;
+    std::function<void(double)>   evaluated;
   };
 } // namespace penny

@@ -10,8 +10,7 @@
 namespace penny
 {
   // Starts below the root at c = a/2 (halving until K_I > 0), then brackets upwards.
-  double
-  fe_adhesionless_gap_radius(GapFamily &gaps, const double P, const double a)
+  double fe_adhesionless_gap_radius(GapFamily &gaps, const double P, const double a)
   {
     const auto K_I = [&](const double c) { return gaps.parabolic_stress_intensity_factor(c, P, a); };
     double     lo = 0.5 * a, K_lo = K_I(lo);
@@ -24,8 +23,7 @@ namespace penny
     return root_above(K_I, lo, K_lo);
   }
 
-  AdhesiveMinimum
-  fe_adhesive_minimum(GapFamily &gaps, const double R_p, const double K_Ic)
+  AdhesiveMinimum fe_adhesive_minimum(GapFamily &gaps, const double R_p, const double K_Ic)
   {
     const auto tension = [&](const double c) {
       const UnitLoadSifs K = gaps.unit_load_sifs(c);
@@ -40,12 +38,11 @@ namespace penny
       throw std::runtime_error("adhesive minimum: Brent's method did not converge in 100 steps");
     if (c_min < 0.26 * scale || c_min > 3.9 * scale)
       throw std::runtime_error("adhesive minimum: the minimum lies at the end of the search interval");
-    return { c_min, p0 };
+    return {c_min, p0};
   }
 
-  std::optional<double>
-  fe_stable_gap_radius(
-      GapFamily &gaps, const double P, const double R_p, const double K_Ic, const AdhesiveMinimum &minimum)
+  std::optional<double> fe_stable_gap_radius(GapFamily &gaps, const double P, const double R_p,
+                                             const double K_Ic, const AdhesiveMinimum &minimum)
   {
     if (P < minimum.tension)
       return std::nullopt;

@@ -24,6 +24,6 @@ namespace penny
 
   // FE g: the radius c >= c_min where P K_uniform(c) - K_quadratic(c)/(2 R_p) = K_Ic,
   // or nothing when P < p0 (the gap closes: full contact).
-  std::optional<double>
-  fe_stable_gap_radius(GapFamily &gaps, double P, double R_p, double K_Ic, const AdhesiveMinimum &minimum);
+  std::optional<double> fe_stable_gap_radius(GapFamily &gaps, double P, double R_p, double K_Ic,
+                                             const AdhesiveMinimum &minimum);
 } // namespace penny

@@ -15,13 +15,12 @@ namespace penny
 
   // The root of f on [lo, hi], where f(lo) and f(hi) differ in sign.
   template <typename F>
-  double
-  bracketed_root(
-      F &&f, const double lo, const double hi, const double f_lo, const double f_hi, const int bits)
+  double bracketed_root(F &&f, const double lo, const double hi, const double f_lo, const double f_hi,
+                        const int bits)
   {
     std::uintmax_t iterations = 100;
     const auto     bracket    = boost::math::tools::toms748_solve(
-        f, lo, hi, f_lo, f_hi, boost::math::tools::eps_tolerance<double>(bits), iterations);
+               f, lo, hi, f_lo, f_hi, boost::math::tools::eps_tolerance<double>(bits), iterations);
     if (iterations >= 100)
       throw std::runtime_error("root finder: no convergence in 100 iterations");
     return 0.5 * (bracket.first + bracket.second);
@@ -29,9 +28,7 @@ namespace penny
 
   // The first root above lo, where f(lo) > 0: the bracket widens geometrically
   // until f changes sign.
-  template <typename F>
-  double
-  root_above(F &&f, double lo, double f_lo, const int bits = fe_root_bits)
+  template <typename F> double root_above(F &&f, double lo, double f_lo, const int bits = fe_root_bits)
   {
     if (!(f_lo > 0))
       throw std::runtime_error("root finder: the lower bracket end has no positive value");

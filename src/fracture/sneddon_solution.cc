@@ -12,23 +12,19 @@ namespace penny
   {
     constexpr double pi = dealii::numbers::PI;
 
-    template <typename F>
-    double
-    integrate(const F &f, const double a, const double b)
+    template <typename F> double integrate(const F &f, const double a, const double b)
     {
       return boost::math::quadrature::gauss_kronrod<double, 31>::integrate(f, a, b, 15, 1e-14);
     }
   } // namespace
 
-  SneddonSolution::SneddonSolution(const FaceLoad &load,
-                                   const double    gap_radius,
-                                   const double    plane_strain_modulus)
+  SneddonSolution::SneddonSolution(const FaceLoad &load, const double gap_radius,
+                                   const double plane_strain_modulus)
       : load(load), c(gap_radius), e_prime(plane_strain_modulus)
   {
   }
 
-  double
-  SneddonSolution::stress_intensity_factor() const
+  double SneddonSolution::stress_intensity_factor() const
   {
     const double P = load.peak_tension();
     const double a = load.tension_radius();
@@ -43,8 +39,7 @@ namespace penny
       }
   }
 
-  double
-  SneddonSolution::opening(const double r) const
+  double SneddonSolution::opening(const double r) const
   {
     const double P    = load.peak_tension();
     const double a    = load.tension_radius();
@@ -60,8 +55,7 @@ namespace penny
       }
   }
 
-  double
-  SneddonSolution::gap_volume() const
+  double SneddonSolution::gap_volume() const
   {
     const double P = load.peak_tension();
     const double a = load.tension_radius();
@@ -77,8 +71,7 @@ namespace penny
   }
 
   // With r = c sin(theta): int_0^c r p/sqrt(c^2 - r^2) dr = c int_0^{pi/2} sin(theta) p(c sin(theta)).
-  double
-  SneddonSolution::stress_intensity_factor_by_quadrature() const
+  double SneddonSolution::stress_intensity_factor_by_quadrature() const
   {
     const double integral =
         integrate([&](const double theta) { return std::sin(theta) * load(c * std::sin(theta)); }, 0, pi / 2);
@@ -87,30 +80,26 @@ namespace penny
 
   // The inner integral over s is t G(t) with G(t) = int_0^{pi/2} sin(theta) p(t sin(theta));
   // the outer one, with u = sqrt(t^2 - r^2), becomes int_0^{sqrt(c^2 - r^2)} G(t(u)) du.
-  double
-  SneddonSolution::opening_by_quadrature(const double r) const
+  double SneddonSolution::opening_by_quadrature(const double r) const
   {
     const auto inner = [&](const double t) {
-      return integrate(
-          [&](const double theta) { return std::sin(theta) * load(t * std::sin(theta)); }, 0, pi / 2);
+      return integrate([&](const double theta) { return std::sin(theta) * load(t * std::sin(theta)); }, 0,
+                       pi / 2);
     };
-    const double outer = integrate([&](const double u) { return inner(std::sqrt(r * r + u * u)); },
-                                   0,
+    const double outer = integrate([&](const double u) { return inner(std::sqrt(r * r + u * u)); }, 0,
                                    std::sqrt(std::max(c * c - r * r, 0.)));
     return 4 / (pi * e_prime) * outer;
   }
 
   // Both faces: 2 int_0^c 2 pi r w(r) dr; with r = c sin(phi) the root at r = c is resolved.
-  double
-  SneddonSolution::gap_volume_by_quadrature() const
+  double SneddonSolution::gap_volume_by_quadrature() const
   {
     const double integral = integrate(
         [&](const double phi) {
           const double r = c * std::sin(phi);
           return r * opening_by_quadrature(r) * c * std::cos(phi);
         },
-        0,
-        pi / 2);
+        0, pi / 2);
     return 4 * pi * integral;
   }
 } // namespace penny

@@ -63,6 +63,7 @@ namespace penny
     };
     Generator    generator;
     unsigned int tip_levels;       // refinement levels below cell size c at the tip
+    unsigned int gap_face_levels;  // cells over the gap face are at most c/2^levels wide
     double       grading_distance; // refine a cell closer to the tip than this many cell sizes
     unsigned int global_refinements;
     double       cell_aspect_ratio; // builtin cells are this many times taller than wide

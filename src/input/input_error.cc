@@ -7,8 +7,7 @@
 
 namespace penny
 {
-  void
-  require(const bool ok, const std::string &entry, const double value, const std::string &range)
+  void require(const bool ok, const std::string &entry, const double value, const std::string &range)
   {
     if (ok)
       return;
@@ -18,8 +17,7 @@ namespace penny
     throw InputError(message.str());
   }
 
-  std::string
-  one_line(const dealii::ExceptionBase &exception)
+  std::string one_line(const dealii::ExceptionBase &exception)
   {
     std::ostringstream info;
     exception.print_info(info);

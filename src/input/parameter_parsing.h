@@ -14,9 +14,7 @@ namespace penny
   template <typename Enum> using EnumNames = std::vector<std::pair<std::string, Enum>>;
 
   // "a|b|c": the pattern of a Selection entry.
-  template <typename Enum>
-  dealii::Patterns::Selection
-  selection(const EnumNames<Enum> &names)
+  template <typename Enum> dealii::Patterns::Selection selection(const EnumNames<Enum> &names)
   {
     std::string pattern;
     for (const auto &[name, value] : names)
@@ -25,9 +23,7 @@ namespace penny
   }
 
   // The value a name stands for; the name has passed its Selection pattern.
-  template <typename Enum>
-  Enum
-  to_enum(const EnumNames<Enum> &names, const std::string &name)
+  template <typename Enum> Enum to_enum(const EnumNames<Enum> &names, const std::string &name)
   {
     for (const auto &[candidate, value] : names)
       if (candidate == name)
@@ -35,9 +31,7 @@ namespace penny
     throw std::logic_error("'" + name + "' is not a name of this selection");
   }
 
-  template <typename Enum>
-  const std::string &
-  to_name(const EnumNames<Enum> &names, const Enum value)
+  template <typename Enum> const std::string &to_name(const EnumNames<Enum> &names, const Enum value)
   {
     for (const auto &[name, candidate] : names)
       if (candidate == value)

@@ -26,17 +26,14 @@ namespace penny
       void (*parse)(ParameterHandler &, Parameters &);
     };
 
-    template <auto member, typename Struct>
-    void
-    parse_into(ParameterHandler &prm, Parameters &parameters)
+    template <auto member, typename Struct> void parse_into(ParameterHandler &prm, Parameters &parameters)
     {
       Struct section;
       section.parse(prm);
       parameters.*member = section;
     }
 
-    void
-    parse_adhesion(ParameterHandler &prm, Parameters &parameters)
+    void parse_adhesion(ParameterHandler &prm, Parameters &parameters)
     {
       if (!parameters.material)
         throw std::logic_error("the Adhesion section needs the Material section");
@@ -51,51 +48,47 @@ namespace penny
     Section::enumerator, name, &Struct::declare, &parse_into<&Parameters::enumerator, Struct>                \
   }
 
-    const std::vector<SectionEntry> &
-    section_table()
+    const std::vector<SectionEntry> &section_table()
     {
       static const std::vector<SectionEntry> table = {
-        PENNY_SECTION(geometry, "Geometry", GeometryParameters),
-        PENNY_SECTION(material, "Material", MaterialParameters),
-        PENNY_SECTION(load, "Load", LoadParameters),
-        PENNY_SECTION(mesh, "Mesh", MeshParameters),
-        PENNY_SECTION(finite_element, "Finite element", FiniteElementParameters),
-        PENNY_SECTION(linear_solver, "Linear solver", LinearSolverParameters),
-        PENNY_SECTION(j_integral, "J-integral", JIntegralParameters),
-        SectionEntry{ Section::adhesion, "Adhesion", &AdhesionParameters::declare, &parse_adhesion },
-        PENNY_SECTION(gap_tension_curve, "Gap-tension curve", GapTensionCurveParameters),
-        PENNY_SECTION(convergence, "Convergence", ConvergenceParameters),
-        PENNY_SECTION(stability, "Stability", StabilityParameters),
-        PENNY_SECTION(roughness, "Roughness", RoughnessParameters),
-        PENNY_SECTION(area_load, "Area-load", AreaLoadParameters),
-        PENNY_SECTION(zero_load_gap_area, "Zero-load gap area", ZeroLoadGapAreaParameters),
-        PENNY_SECTION(fe_gap_area, "FE gap area", FeGapAreaParameters),
-        PENNY_SECTION(magnification_scaling, "Magnification scaling", MagnificationScalingParameters),
-        PENNY_SECTION(sinusoid, "Sinusoid", SinusoidParameters),
-        PENNY_SECTION(fields, "Fields", FieldParameters),
-        PENNY_SECTION(output, "Output", OutputParameters)
-      };
+          PENNY_SECTION(geometry, "Geometry", GeometryParameters),
+          PENNY_SECTION(material, "Material", MaterialParameters),
+          PENNY_SECTION(load, "Load", LoadParameters),
+          PENNY_SECTION(mesh, "Mesh", MeshParameters),
+          PENNY_SECTION(finite_element, "Finite element", FiniteElementParameters),
+          PENNY_SECTION(linear_solver, "Linear solver", LinearSolverParameters),
+          PENNY_SECTION(j_integral, "J-integral", JIntegralParameters),
+          SectionEntry{Section::adhesion, "Adhesion", &AdhesionParameters::declare, &parse_adhesion},
+          PENNY_SECTION(gap_tension_curve, "Gap-tension curve", GapTensionCurveParameters),
+          PENNY_SECTION(convergence, "Convergence", ConvergenceParameters),
+          PENNY_SECTION(stability, "Stability", StabilityParameters),
+          PENNY_SECTION(verification, "Verification", VerificationParameters),
+          PENNY_SECTION(roughness, "Roughness", RoughnessParameters),
+          PENNY_SECTION(area_load, "Area-load", AreaLoadParameters),
+          PENNY_SECTION(zero_load_gap_area, "Zero-load gap area", ZeroLoadGapAreaParameters),
+          PENNY_SECTION(fe_gap_area, "FE gap area", FeGapAreaParameters),
+          PENNY_SECTION(magnification_scaling, "Magnification scaling", MagnificationScalingParameters),
+          PENNY_SECTION(sinusoid, "Sinusoid", SinusoidParameters),
+          PENNY_SECTION(fields, "Fields", FieldParameters),
+          PENNY_SECTION(output, "Output", OutputParameters)};
       return table;
     }
 #undef PENNY_SECTION
 
-    bool
-    contains(const std::vector<Section> &sections, const Section section)
+    bool contains(const std::vector<Section> &sections, const Section section)
     {
       return std::find(sections.begin(), sections.end(), section) != sections.end();
     }
 
     // Relative paths in a parameter file start at the file's folder.
-    void
-    resolve(std::string &path, const std::string &folder)
+    void resolve(std::string &path, const std::string &folder)
     {
       if (std::filesystem::path(path).is_relative())
         path = (std::filesystem::path(folder) / path).lexically_normal().string();
     }
   } // namespace
 
-  std::string
-  section_names(const std::vector<Section> &sections)
+  std::string section_names(const std::vector<Section> &sections)
   {
     std::string names;
     for (const auto &entry : section_table())
@@ -104,11 +97,8 @@ namespace penny
     return names;
   }
 
-  void
-  Parameters::declare(ParameterHandler               &prm,
-                      const std::vector<std::string> &scene_names,
-                      const std::string              &scene_documentation,
-                      const std::vector<Section>     &sections)
+  void Parameters::declare(ParameterHandler &prm, const std::vector<std::string> &scene_names,
+                           const std::string &scene_documentation, const std::vector<Section> &sections)
   {
     std::string names;
     for (const auto &name : scene_names)
@@ -119,8 +109,8 @@ namespace penny
         entry.declare(prm);
   }
 
-  Parameters
-  Parameters::parse(ParameterHandler &prm, const std::vector<Section> &sections, const std::string &folder)
+  Parameters Parameters::parse(ParameterHandler &prm, const std::vector<Section> &sections,
+                               const std::string &folder)
   {
     Parameters parameters;
     parameters.scene = prm.get("Scene");
@@ -135,9 +125,7 @@ namespace penny
         const double c          = geometry.gap_radius;
         const double room       = std::min(geometry.domain_height, geometry.domain_radius - c);
         const double max_radius = *std::max_element(radii.begin(), radii.end());
-        require(max_radius * c < room,
-                "J-integral/Ring radii",
-                max_radius,
+        require(max_radius * c < room, "J-integral/Ring radii", max_radius,
                 "(0, min(H, R - c)/c = " + dealii::Utilities::to_string(room / c) + ")");
       }
     if (parameters.mesh)
@@ -159,8 +147,7 @@ namespace penny
     return parameters;
   }
 
-  void
-  parse_parameter_file(ParameterHandler &prm, const std::string &filename, const std::string &scene)
+  void parse_parameter_file(ParameterHandler &prm, const std::string &filename, const std::string &scene)
   {
     if (!std::filesystem::is_regular_file(filename))
       throw InputError("parameter file '" + filename + "' does not exist or is not a file");
@@ -175,8 +162,7 @@ namespace penny
         // one the scene does not read.
         std::smatch match;
         if (!scene.empty() && typeid(exception) == typeid(ParameterHandler::ExcNoSubsection) &&
-            std::regex_search(message,
-                              match,
+            std::regex_search(message, match,
                               std::regex("Line <([0-9]+)> of file <.*: There is no such "
                                          "subsection to be entered: (.*)$")))
           message = "line " + match[1].str() + ": subsection '" + match[2].str() +

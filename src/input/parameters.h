@@ -29,6 +29,7 @@ namespace penny
     gap_tension_curve,
     convergence,
     stability,
+    verification,
     roughness,
     area_load,
     zero_load_gap_area,
@@ -57,6 +58,7 @@ namespace penny
     std::optional<GapTensionCurveParameters>      gap_tension_curve;
     std::optional<ConvergenceParameters>          convergence;
     std::optional<StabilityParameters>            stability;
+    std::optional<VerificationParameters>         verification;
     std::optional<RoughnessParameters>            roughness;
     std::optional<AreaLoadParameters>             area_load;
     std::optional<ZeroLoadGapAreaParameters>      zero_load_gap_area;
@@ -67,21 +69,18 @@ namespace penny
     std::optional<OutputParameters>               output;
 
     // The 'Scene' entry, a selection of `scene_names`, and the sections.
-    static void declare(dealii::ParameterHandler       &prm,
-                        const std::vector<std::string> &scene_names,
-                        const std::string              &scene_documentation,
-                        const std::vector<Section>     &sections);
+    static void declare(dealii::ParameterHandler &prm, const std::vector<std::string> &scene_names,
+                        const std::string &scene_documentation, const std::vector<Section> &sections);
 
     // Parses and checks the declared sections; relative file names are
     // taken from `folder`.
-    static Parameters parse(dealii::ParameterHandler   &prm,
-                            const std::vector<Section> &sections,
-                            const std::string          &folder = "");
+    static Parameters parse(dealii::ParameterHandler &prm, const std::vector<Section> &sections,
+                            const std::string &folder = "");
   };
 
   // Reads and checks `filename` with `prm`, in which the scene entry and
   // `sections` have been declared. Throws InputError (one line) for any
   // problem, naming the line of a subsection the scene does not read.
-  void
-  parse_parameter_file(dealii::ParameterHandler &prm, const std::string &filename, const std::string &scene);
+  void parse_parameter_file(dealii::ParameterHandler &prm, const std::string &filename,
+                            const std::string &scene);
 } // namespace penny

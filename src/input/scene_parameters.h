@@ -49,6 +49,15 @@ namespace penny
     void        parse(dealii::ParameterHandler &prm);
   };
 
+  // The scenes that compare FE results with closed forms give a verdict.
+  struct VerificationParameters
+  {
+    double tolerance; // largest relative error of a PASS
+
+    static void declare(dealii::ParameterHandler &prm);
+    void        parse(dealii::ParameterHandler &prm);
+  };
+
   struct StabilityParameters
   {
     double target_accuracy; // relative K_I error a stability case must reach

@@ -19,17 +19,14 @@ namespace penny
   {
     const char *const marker = ".penny-results";
 
-    bool
-    on_rank_zero()
+    bool on_rank_zero()
     {
       return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     }
 
     // Runs `action` on rank 0; the message of an exception it throws reaches
     // every rank, where it is thrown again (as InputError if it was one).
-    template <typename Action>
-    void
-    on_rank_zero_for_all(Action &&action)
+    template <typename Action> void on_rank_zero_for_all(Action &&action)
     {
       std::string message;
       bool        input_error = false;
@@ -57,8 +54,7 @@ namespace penny
     }
 
     // On rank 0: `contents` into `path`, or an exception.
-    void
-    write_file(const fs::path &path, const std::string &contents)
+    void write_file(const fs::path &path, const std::string &contents)
     {
       std::ofstream out(path, std::ios::binary);
       out << contents;
@@ -67,8 +63,7 @@ namespace penny
         throw std::runtime_error("output: could not write " + path.string());
     }
 
-    std::string
-    errno_text()
+    std::string errno_text()
     {
       return std::strerror(errno);
     }
@@ -121,22 +116,19 @@ namespace penny
       }
   }
 
-  void
-  ResultFolder::write(const std::string &file, const std::string &contents) const
+  void ResultFolder::write(const std::string &file, const std::string &contents) const
   {
     on_rank_zero_for_all([&]() { write_file(staging_directory / file, contents); });
   }
 
-  void
-  ResultFolder::write_csv(const std::string &file, const Table &table) const
+  void ResultFolder::write_csv(const std::string &file, const Table &table) const
   {
     write(file, table.csv());
   }
 
   // With the target in place, the two folders swap names in one step
   // (renameat2 RENAME_EXCHANGE), and the previous results are removed.
-  void
-  ResultFolder::commit()
+  void ResultFolder::commit()
   {
     on_rank_zero_for_all([&]() {
       const fs::path  target = final_directory.empty() ? fs::path(".") : final_directory;

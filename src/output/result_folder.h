@@ -28,17 +28,9 @@ namespace penny
     ~ResultFolder();
 
     // The results' final folder, as the user named it.
-    const std::filesystem::path &
-    directory() const
-    {
-      return final_directory;
-    }
+    const std::filesystem::path &directory() const { return final_directory; }
     // Where the files go until commit().
-    const std::filesystem::path &
-    staging() const
-    {
-      return staging_directory;
-    }
+    const std::filesystem::path &staging() const { return staging_directory; }
 
     void write(const std::string &file, const std::string &contents) const;
     void write_csv(const std::string &file, const Table &table) const;

@@ -10,8 +10,7 @@ namespace penny
 {
   namespace
   {
-    std::string
-    screen_text(const Table::Cell &cell, const Table::Format &column_format)
+    std::string screen_text(const Table::Cell &cell, const Table::Format &column_format)
     {
       std::ostringstream text;
       if (const double *number = std::get_if<double>(&cell.value))
@@ -29,8 +28,7 @@ namespace penny
     }
 
     // Every digit of a number; text quoted where it holds a comma or a quote.
-    std::string
-    csv_text(const Table::Cell &cell)
+    std::string csv_text(const Table::Cell &cell)
     {
       std::ostringstream text;
       if (const double *number = std::get_if<double>(&cell.value))
@@ -53,14 +51,12 @@ namespace penny
 
   Table::Table(std::vector<Column> columns) : columns(std::move(columns)) {}
 
-  Table
-  Table::summary()
+  Table Table::summary()
   {
-    return Table({ { "quantity" }, { "value" } });
+    return Table({{"quantity"}, {"value"}});
   }
 
-  void
-  Table::add_row(std::vector<Cell> row)
+  void Table::add_row(std::vector<Cell> row)
   {
     if (row.size() != columns.size())
       throw std::logic_error("table row of " + std::to_string(row.size()) + " cells for " +
@@ -69,8 +65,7 @@ namespace penny
   }
 
   // Two spaces between columns.
-  void
-  Table::print(std::ostream &out) const
+  void Table::print(std::ostream &out) const
   {
     std::vector<std::vector<std::string>> texts(rows.size());
     std::vector<std::size_t>              widths;
@@ -97,8 +92,7 @@ namespace penny
     out << std::right;
   }
 
-  std::string
-  Table::csv() const
+  std::string Table::csv() const
   {
     std::ostringstream out;
     for (std::size_t j = 0; j < columns.size(); ++j)

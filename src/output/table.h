@@ -53,11 +53,7 @@ namespace penny
     // One cell per column.
     void add_row(std::vector<Cell> row);
 
-    std::size_t
-    n_rows() const
-    {
-      return rows.size();
-    }
+    std::size_t n_rows() const { return rows.size(); }
 
     void        print(std::ostream &out) const;
     std::string csv() const;

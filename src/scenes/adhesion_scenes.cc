@@ -13,23 +13,17 @@ namespace penny
 
   namespace
   {
-    const Table::Format all_digits{ 16, false }, error_digits{ 3, true };
+    const Table::Format all_digits{16, false}, error_digits{3, true};
 
     // The closing rows of every search: its cost.
-    void
-    add_cost(Table &summary, const GapSearch &search)
+    void add_cost(Table &summary, const GapSearch &search)
     {
-      summary.add_row({ "FE solves", search.gaps.n_solves() });
-      summary.add_row(
-          { "wall time (s)", Table::Cell(total_wall_time(search.timer), Table::Format{ 3, false }) });
+      summary.add_row({"FE solves", search.gaps.n_solves()});
+      add_phase_times(summary, search.timer);
     }
 
-    void
-    report(const Table        &summary,
-           const std::string  &title,
-           const std::string  &file,
-           const ResultFolder &results,
-           std::ostream       &log)
+    void report(const Table &summary, const std::string &title, const std::string &file,
+                const ResultFolder &results, std::ostream &log)
     {
       log << title << '\n';
       summary.print(log);
@@ -37,31 +31,28 @@ namespace penny
     }
   } // namespace
 
-  GapSizeResult
-  run_gap_size_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+  GapSizeResult run_gap_size_scene(const Parameters &parameters, const ResultFolder &results,
+                                   std::ostream &log)
   {
-    GapSearch    search(parameters);
+    GapSearch    search(parameters, log);
     const double a = parameters.load->tension_radius;
     const double c = fe_adhesionless_gap_radius(search.gaps, parameters.load->peak_tension, a);
 
     Table summary = Table::summary();
-    summary.add_row({ "c/a FE", Table::Cell(c / a, all_digits) });
-    summary.add_row({ "c/a exact, sqrt(3/2)", Table::Cell(closed_form::adhesionless_c_over_a, all_digits) });
-    summary.add_row({ "relative error",
-                      Table::Cell(relative_error(c / a, closed_form::adhesionless_c_over_a), error_digits) });
+    summary.add_row({"c/a FE", Table::Cell(c / a, all_digits)});
+    summary.add_row({"c/a exact, sqrt(3/2)", Table::Cell(closed_form::adhesionless_c_over_a, all_digits)});
+    summary.add_row({"relative error",
+                     Table::Cell(relative_error(c / a, closed_form::adhesionless_c_over_a), error_digits)});
     add_cost(summary, search);
-    report(summary,
-           "Adhesionless gap size: FE K_I(c) = 0 for the parabola P (1 - r^2/a^2)",
-           "gap-size.csv",
-           results,
-           log);
-    return { c / a, search.gaps.n_solves() };
+    report(summary, "Adhesionless gap size: FE K_I(c) = 0 for the parabola P (1 - r^2/a^2)", "gap-size.csv",
+           results, log);
+    return {c / a, search.gaps.n_solves()};
   }
 
-  AdhesiveMinimumResult
-  run_adhesive_minimum_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+  AdhesiveMinimumResult run_adhesive_minimum_scene(const Parameters &parameters, const ResultFolder &results,
+                                                   std::ostream &log)
   {
-    GapSearch             search(parameters);
+    GapSearch             search(parameters, log);
     const double          R_p     = search.summit_radius;
     const double          K_Ic    = search.critical_stress_intensity;
     const AdhesiveMinimum minimum = fe_adhesive_minimum(search.gaps, R_p, K_Ic);
@@ -69,43 +60,39 @@ namespace penny
     const double          c_hat   = minimum.gap_radius / adhesion_length(R_p, K_Ic);
 
     Table summary = Table::summary();
-    summary.add_row({ "p0 FE (Pa)", Table::Cell(minimum.tension, all_digits) });
-    summary.add_row({ "c_min FE (m)", Table::Cell(minimum.gap_radius, all_digits) });
-    summary.add_row({ "psi FE", Table::Cell(psi, all_digits) });
-    summary.add_row({ "psi exact", Table::Cell(closed_form::psi, all_digits) });
-    summary.add_row({ "c_min/(R_p K_Ic)^(2/5) FE", Table::Cell(c_hat, all_digits) });
-    summary.add_row({ "c_min/(R_p K_Ic)^(2/5) exact", Table::Cell(closed_form::c_min_factor, all_digits) });
-    summary.add_row(
-        { "psi relative error", Table::Cell(relative_error(psi, closed_form::psi), error_digits) });
-    summary.add_row({ "c_min relative error",
-                      Table::Cell(relative_error(c_hat, closed_form::c_min_factor), error_digits) });
+    summary.add_row({"p0 FE (Pa)", Table::Cell(minimum.tension, all_digits)});
+    summary.add_row({"c_min FE (m)", Table::Cell(minimum.gap_radius, all_digits)});
+    summary.add_row({"psi FE", Table::Cell(psi, all_digits)});
+    summary.add_row({"psi exact", Table::Cell(closed_form::psi, all_digits)});
+    summary.add_row({"c_min/(R_p K_Ic)^(2/5) FE", Table::Cell(c_hat, all_digits)});
+    summary.add_row({"c_min/(R_p K_Ic)^(2/5) exact", Table::Cell(closed_form::c_min_factor, all_digits)});
+    summary.add_row({"psi relative error", Table::Cell(relative_error(psi, closed_form::psi), error_digits)});
+    summary.add_row({"c_min relative error",
+                     Table::Cell(relative_error(c_hat, closed_form::c_min_factor), error_digits)});
     add_cost(summary, search);
-    report(summary,
-           "Adhesive minimum: min over c of P(c) = [K_Ic + K_2(c)/(2 R_p)] / K_1(c), FE",
-           "adhesive-minimum.csv",
-           results,
-           log);
-    return { psi, c_hat, search.gaps.n_solves() };
+    report(summary, "Adhesive minimum: min over c of P(c) = [K_Ic + K_2(c)/(2 R_p)] / K_1(c), FE",
+           "adhesive-minimum.csv", results, log);
+    return {psi, c_hat, search.gaps.n_solves()};
   }
 
   // p_hat = P/p0 and c_hat = c/c_min, normalised by the closed-form p0 and c_min
   // so that FE and closed form share one axis.
-  double
-  run_gap_tension_curve_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+  double run_gap_tension_curve_scene(const Parameters &parameters, const ResultFolder &results,
+                                     std::ostream &log)
   {
-    GapSearch    search(parameters);
+    GapSearch    search(parameters, log);
     const double R_p   = search.summit_radius;
     const double K_Ic  = search.critical_stress_intensity;
     const double c_min = closed_form::c_min_factor * adhesion_length(R_p, K_Ic);
     const double p0    = closed_form::psi * adhesion_tension(R_p, K_Ic);
     const auto  &range = *parameters.gap_tension_curve;
 
-    const Table::Format digits{ 12, false };
-    Table               table({ { "c_hat", digits },
-                                { "p_hat FE", digits },
-                                { "p_hat exact", digits },
-                                { "p_hat linear", digits },
-                                { "relative error", digits } });
+    const Table::Format digits{12, false};
+    Table               table({{"c_hat", digits},
+                               {"p_hat FE", digits},
+                               {"p_hat exact", digits},
+                               {"p_hat linear", digits},
+                               {"relative error", digits}});
     double              worst = 0;
     for (unsigned int i = 0; i < range.n_points; ++i)
       {
@@ -116,21 +103,21 @@ namespace penny
         const double       exact  = (c_hat * c_hat + 4 / std::sqrt(c_hat)) / 5;
         const double       linear = c_hat * c_hat > 2.5 ? c_hat * c_hat / 5 + 0.5 : 1.;
         worst                     = std::max(worst, relative_error(p_fe, exact));
-        table.add_row({ c_hat, p_fe, exact, linear, relative_error(p_fe, exact) });
+        table.add_row({c_hat, p_fe, exact, linear, relative_error(p_fe, exact)});
       }
     results.write_csv("gap-tension-curve.csv", table);
     table.print(log);
     Table summary = Table::summary();
-    summary.add_row({ "largest relative error", Table::Cell(worst, error_digits) });
+    summary.add_row({"largest relative error", Table::Cell(worst, error_digits)});
     add_cost(summary, search);
     summary.print(log);
     return worst;
   }
 
-  std::optional<double>
-  run_adhesive_equilibrium_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+  std::optional<double> run_adhesive_equilibrium_scene(const Parameters   &parameters,
+                                                       const ResultFolder &results, std::ostream &log)
   {
-    GapSearch             search(parameters);
+    GapSearch             search(parameters, log);
     const double          P       = parameters.load->peak_tension;
     const double          R_p     = search.summit_radius;
     const double          K_Ic    = search.critical_stress_intensity;
@@ -138,23 +125,20 @@ namespace penny
     const auto            c_t     = fe_stable_gap_radius(search.gaps, P, R_p, K_Ic, minimum);
 
     Table summary = Table::summary();
-    summary.add_row({ "peak tension P (Pa)", Table::Cell(P, all_digits) });
-    summary.add_row({ "p0 FE (Pa)", Table::Cell(minimum.tension, all_digits) });
+    summary.add_row({"peak tension P (Pa)", Table::Cell(P, all_digits)});
+    summary.add_row({"p0 FE (Pa)", Table::Cell(minimum.tension, all_digits)});
     if (c_t)
       {
         const double exact = *closed_form::stable_gap_radius(P, R_p, K_Ic);
-        summary.add_row({ "gap radius c_t FE (m)", Table::Cell(*c_t, all_digits) });
-        summary.add_row({ "c_t closed form (m)", Table::Cell(exact, all_digits) });
-        summary.add_row({ "relative error", Table::Cell(relative_error(*c_t, exact), error_digits) });
+        summary.add_row({"gap radius c_t FE (m)", Table::Cell(*c_t, all_digits)});
+        summary.add_row({"c_t closed form (m)", Table::Cell(exact, all_digits)});
+        summary.add_row({"relative error", Table::Cell(relative_error(*c_t, exact), error_digits)});
       }
     else
-      summary.add_row({ "gap", "closed: P < p0, no gap survives (full contact)" });
+      summary.add_row({"gap", "closed: P < p0, no gap survives (full contact)"});
     add_cost(summary, search);
-    report(summary,
-           "Adhesive equilibrium on the stable branch (K_I = K_Ic, c >= c_min), FE",
-           "adhesive-equilibrium.csv",
-           results,
-           log);
+    report(summary, "Adhesive equilibrium on the stable branch (K_I = K_Ic, c >= c_min), FE",
+           "adhesive-equilibrium.csv", results, log);
     return c_t;
   }
 } // namespace penny

@@ -26,30 +26,29 @@ namespace penny
         {
         case Strategy::uniform_h:
           model.mesh.global_refinements = k;
-          return { model, double(k) };
+          return {model, double(k)};
         case Strategy::tip_grading:
           model.mesh.tip_levels = sequence.first_tip_levels + k * sequence.tip_levels_step;
-          return { model, double(model.mesh.tip_levels) };
+          return {model, double(model.mesh.tip_levels)};
         case Strategy::degree:
           model.degree = k + 1;
-          return { model, double(k + 1) };
+          return {model, double(k + 1)};
         case Strategy::adaptive: // cycle k refines the mesh of cycle k - 1
           model.mesh.tip_levels = sequence.first_tip_levels;
-          return { model, double(k) };
+          return {model, double(k)};
         case Strategy::domain_size:
           {
             // R/c from 10 to 1e4, evenly in log.
             const double ratio           = std::pow(10., 1 + 3. * k / std::max(1u, sequence.cycles - 1));
             model.geometry.domain_radius = ratio * model.geometry.gap_radius;
             model.geometry.domain_height = ratio * model.geometry.gap_radius;
-            return { model, ratio };
+            return {model, ratio};
           }
         }
-      return { model, 0. };
+      return {model, 0.};
     }
 
-    const char *
-    setting_name(const Strategy strategy)
+    const char *setting_name(const Strategy strategy)
     {
       switch (strategy)
         {
@@ -68,25 +67,24 @@ namespace penny
     }
   } // namespace
 
-  std::vector<ConvergenceRow>
-  run_convergence_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+  std::vector<ConvergenceRow> run_convergence_scene(const Parameters &parameters, const ResultFolder &results,
+                                                    std::ostream &log)
   {
     const auto                    &sequence = *parameters.convergence;
     const auto                    &radii    = parameters.j_integral->ring_radii;
-    const std::vector<std::string> phases   = { "mesh", "setup", "assembly", "solve", "J-integral" };
-    const Table::Format            digits{ 12, false };
+    const std::vector<std::string> phases   = {"mesh", "setup", "assembly", "solve", "J-integral"};
+    const Table::Format            digits{12, false};
     std::vector<Table::Column>     columns = {
-          { "cycle" }, { setting_name(sequence.strategy), digits }, { "cells" }, { "DoFs" }
-    };
+            {"cycle"}, {setting_name(sequence.strategy), digits}, {"cells"}, {"DoFs"}};
     for (const double rho : radii)
-      columns.push_back({ "K_I ring " + Utilities::to_string(rho) + " (Pa m^1/2)", digits });
-    columns.push_back({ "relative error", Table::Format{ 3, true } });
-    columns.push_back({ "rate", Table::Format{ 3, false } });
+      columns.push_back({"K_I ring " + Utilities::to_string(rho) + " (Pa m^1/2)", digits});
+    columns.push_back({"relative error", Table::Format{3, true}});
+    columns.push_back({"rate", Table::Format{3, false}});
     for (const auto &phase : phases)
-      columns.push_back({ phase + " (s)", Table::Format{ 3, false } });
-    for (const std::string name : { "wall (s)", "peak memory (MiB)" })
-      columns.push_back({ name, Table::Format{ 4, false } });
-    columns.push_back({ "solver" });
+      columns.push_back({phase + " (s)", Table::Format{3, false}});
+    for (const std::string name : {"wall (s)", "peak memory (MiB)"})
+      columns.push_back({name, Table::Format{4, false}});
+    columns.push_back({"solver"});
     Table table(columns);
 
     // One timer for the scene; a cycle's phases are the differences of its
@@ -113,13 +111,12 @@ namespace penny
         else
           solved = solve_penny_gap(model, load, radii, timer);
 
-        ConvergenceRow row{ k, solved.n_cells, solved.n_dofs, setting, {}, 0, 0, 0 };
+        ConvergenceRow row{k, solved.n_cells, solved.n_dofs, setting, {}, 0, 0, 0};
         for (const auto &ring : solved.rings)
           {
             row.stress_intensity_factors.push_back(ring.signed_stress_intensity_factor);
-            row.error = std::max(
-                row.error,
-                relative_error(ring.signed_stress_intensity_factor, solved.exact_stress_intensity_factor));
+            row.error = std::max(row.error, relative_error(ring.signed_stress_intensity_factor,
+                                                           solved.exact_stress_intensity_factor));
           }
         if (!rows.empty())
           row.rate =
@@ -135,7 +132,7 @@ namespace penny
         const double peak_memory =
             Utilities::MPI::max(memory.VmHWM / 1024., MPI_COMM_WORLD); // of the largest rank
 
-        std::vector<Table::Cell> cells = { k, setting, row.n_cells, row.n_dofs };
+        std::vector<Table::Cell> cells = {k, setting, row.n_cells, row.n_dofs};
         for (const double K : row.stress_intensity_factors)
           cells.push_back(K);
         cells.push_back(row.error);

@@ -21,6 +21,6 @@ namespace penny
     double              wall_time;
   };
 
-  std::vector<ConvergenceRow>
-  run_convergence_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log);
+  std::vector<ConvergenceRow> run_convergence_scene(const Parameters &parameters, const ResultFolder &results,
+                                                    std::ostream &log);
 } // namespace penny

@@ -13,10 +13,9 @@ namespace penny
   // The FE g at Chebyshev points of t, P = p0 + t^2 sqrt(V), interpolated in t
   // and aggregated; the closed-form g goes through the same table (to show the
   // interpolation error alone) and through the exact law.
-  double
-  run_fe_gap_area_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+  double run_fe_gap_area_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
   {
-    GapSearch    search(parameters);
+    GapSearch    search(parameters, log);
     const auto  &range    = *parameters.area_load;
     const double adhesion = parameters.fe_gap_area->adhesion_ratio;
     const double R_p      = search.summit_radius;
@@ -25,17 +24,17 @@ namespace penny
     const double sqrt_V   = p0 / adhesion;
     const auto   minimum  = fe_adhesive_minimum(search.gaps, R_p, K_Ic);
 
-    const GapPopulation exact_gaps{ std::sqrt(2 * M_PI), adhesion };
-    const GapPopulation fe_gaps{ exact_gaps.prefactor, minimum.tension / sqrt_V };
+    const GapPopulation exact_gaps{std::sqrt(2 * M_PI), adhesion};
+    const GapPopulation fe_gaps{exact_gaps.prefactor, minimum.tension / sqrt_V};
     const unsigned int  n_tensions = parameters.fe_gap_area->n_tabulated_tensions;
     const double        t_max   = std::max(integration_limit(fe_gaps.adhesion, range.smallest_mean_pressure),
-                                  integration_limit(exact_gaps.adhesion, range.smallest_mean_pressure));
+                                           integration_limit(exact_gaps.adhesion, range.smallest_mean_pressure));
     const auto          fe_P    = chebyshev_tensions(fe_gaps.adhesion, t_max, n_tensions);
     const auto          exact_P = chebyshev_tensions(exact_gaps.adhesion, t_max, n_tensions);
     const auto          exact   = exact_gap_law(exact_gaps.adhesion);
     std::vector<double> fe_areas, exact_areas;
-    Table  gap_table({ { "P/sqrtV" }, { "c_t FE (m)" }, { "c_t closed form (m)" }, { "relative error" } });
-    double worst_radius = 0;
+    Table               gap_table({{"P/sqrtV"}, {"c_t FE (m)"}, {"c_t closed form (m)"}, {"relative error"}});
+    double              worst_radius = 0;
     for (unsigned int j = 0; j < fe_P.size(); ++j)
       {
         // fe_P[0] sqrt(V) may round a hair below the FE p0.
@@ -45,17 +44,17 @@ namespace penny
         fe_areas.push_back(c * c / (3 * R_p * sqrt_V));
         exact_areas.push_back(exact(exact_P[j]));
         worst_radius = std::max(worst_radius, relative_error(c, c0));
-        gap_table.add_row({ fe_P[j], c, c0, relative_error(c, c0) });
+        gap_table.add_row({fe_P[j], c, c0, relative_error(c, c0)});
       }
     const auto fe_law      = tabulated_gap_law(fe_gaps.adhesion, t_max, fe_areas);
     const auto exact_table = tabulated_gap_law(exact_gaps.adhesion, t_max, exact_areas);
 
     double worst = 0, worst_table = 0;
-    Table  table({ { "p_bar/sqrtV" },
-                   { "A_nc FE g" },
-                   { "A_nc closed-form g" },
-                   { "A_nc closed-form g tabulated" },
-                   { "relative difference" } });
+    Table  table({{"p_bar/sqrtV"},
+                  {"A_nc FE g"},
+                  {"A_nc closed-form g"},
+                  {"A_nc closed-form g tabulated"},
+                  {"relative difference"}});
     for (unsigned int i = 0; i < range.n_points; ++i)
       {
         const double p_bar     = range.mean_pressure(i);
@@ -64,23 +63,22 @@ namespace penny
         const double tabulated = noncontact_area(exact_gaps, exact_table, p_bar);
         worst                  = std::max(worst, relative_error(fe, reference));
         worst_table            = std::max(worst_table, relative_error(tabulated, reference));
-        table.add_row({ p_bar, fe, reference, tabulated, relative_error(fe, reference) });
+        table.add_row({p_bar, fe, reference, tabulated, relative_error(fe, reference)});
       }
     results.write_csv("fe-gap-table.csv", gap_table);
     results.write_csv("fe-gap-area.csv", table);
 
-    const Table::Format error_digits{ 2, true };
+    const Table::Format error_digits{2, true};
     Table               summary = Table::summary();
-    summary.add_row({ "p0/sqrt(V)", adhesion });
-    summary.add_row({ "tabulated peak tensions", n_tensions });
-    summary.add_row({ "smallest P/sqrt(V)", fe_P.front() });
-    summary.add_row({ "largest P/sqrt(V)", fe_P.back() });
-    summary.add_row({ "largest |c_t FE/c_t closed form - 1|", Table::Cell(worst_radius, error_digits) });
-    summary.add_row({ "largest |A_nc(FE g)/A_nc(closed-form g) - 1|", Table::Cell(worst, error_digits) });
-    summary.add_row({ "... of the table alone (closed-form g)", Table::Cell(worst_table, error_digits) });
-    summary.add_row({ "FE solves", search.gaps.n_solves() });
-    summary.add_row(
-        { "wall time (s)", Table::Cell(total_wall_time(search.timer), Table::Format{ 3, false }) });
+    summary.add_row({"p0/sqrt(V)", adhesion});
+    summary.add_row({"tabulated peak tensions", n_tensions});
+    summary.add_row({"smallest P/sqrt(V)", fe_P.front()});
+    summary.add_row({"largest P/sqrt(V)", fe_P.back()});
+    summary.add_row({"largest |c_t FE/c_t closed form - 1|", Table::Cell(worst_radius, error_digits)});
+    summary.add_row({"largest |A_nc(FE g)/A_nc(closed-form g) - 1|", Table::Cell(worst, error_digits)});
+    summary.add_row({"... of the table alone (closed-form g)", Table::Cell(worst_table, error_digits)});
+    summary.add_row({"FE solves", search.gaps.n_solves()});
+    add_phase_times(summary, search.timer);
     log << "Area-load curve with the FE gap function g (stable branch of K_I = K_Ic)\n"
         << "convention: paper prefactor sqrt(2 pi) (the comparison is a ratio, free of the prefactor)\n";
     summary.print(log);

@@ -16,40 +16,34 @@ namespace penny
 
   namespace
   {
-    Table
-    ring_table(const PennySceneResults &results)
+    Table ring_table(const PennySceneResults &results)
     {
-      const Table::Format digits{ 10, true };
-      Table               table({ { "ring (c)", digits },
-                                  { "J (J/m^2)", digits },
-                                  { "|K_I| FE (Pa m^1/2)", digits },
-                                  { "K_I signed FE (Pa m^1/2)", digits },
-                                  { "K_I exact (Pa m^1/2)", digits },
-                                  { "|K_I| relative error", digits } });
+      const Table::Format digits{10, true};
+      Table               table({{"ring (c)", digits},
+                                 {"J (J/m^2)", digits},
+                                 {"|K_I| FE (Pa m^1/2)", digits},
+                                 {"K_I signed FE (Pa m^1/2)", digits},
+                                 {"K_I exact (Pa m^1/2)", digits},
+                                 {"|K_I| relative error", digits}});
       const double        exact = results.exact_stress_intensity_factor;
       for (const auto &ring : results.rings)
-        table.add_row({ ring.radius,
-                        ring.energy_release_rate,
-                        ring.stress_intensity_factor,
-                        ring.signed_stress_intensity_factor,
-                        exact,
-                        relative_error(ring.stress_intensity_factor, std::abs(exact)) });
+        table.add_row({ring.radius, ring.energy_release_rate, ring.stress_intensity_factor,
+                       ring.signed_stress_intensity_factor, exact,
+                       relative_error(ring.stress_intensity_factor, std::abs(exact))});
       return table;
     }
 
-    Table
-    summary_table(const PennySceneResults &results, const unsigned int degree, const TimerOutput &timer)
+    Table summary_table(const PennySceneResults &results, const unsigned int degree, const TimerOutput &timer)
     {
       Table table = Table::summary();
-      table.add_row({ "cells", results.n_cells });
-      table.add_row({ "DoFs", results.n_dofs });
-      table.add_row({ "degree", degree });
-      table.add_row({ "MPI ranks", Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) });
-      table.add_row({ "solver", results.solver });
-      table.add_row(
-          { "relative residual", Table::Cell(results.relative_residual, Table::Format{ 10, true }) });
+      table.add_row({"cells", results.n_cells});
+      table.add_row({"DoFs", results.n_dofs});
+      table.add_row({"degree", degree});
+      table.add_row({"MPI ranks", Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)});
+      table.add_row({"solver", results.solver});
+      table.add_row({"relative residual", Table::Cell(results.relative_residual, Table::Format{10, true})});
       const auto row = [&](const std::string &name, const double value) {
-        table.add_row({ name, Table::Cell(value, Table::Format{ 10, true }) });
+        table.add_row({name, Table::Cell(value, Table::Format{10, true})});
       };
       row("opening w(0) FE (m)", results.opening_at_centre);
       row("opening w(0) exact (m)", results.exact_opening_at_centre);
@@ -58,18 +52,14 @@ namespace penny
       row("gap volume FE (m^3)", results.gap_volume);
       row("gap volume exact (m^3)", results.exact_gap_volume);
       row("volume relative error", relative_error(results.gap_volume, results.exact_gap_volume));
-      for (const auto &[phase, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
-        table.add_row({ "wall time " + phase + " (s)", Table::Cell(seconds, Table::Format{ 3, false }) });
+      add_phase_times(table, timer);
       return table;
     }
   } // namespace
 
-  PennySceneResults
-  measure_penny_gap(PennyGapModel             &model,
-                    const FaceLoad            &load,
-                    const std::vector<double> &ring_radii,
-                    TimerOutput               &timer,
-                    const ResultFolder        *fields)
+  PennySceneResults measure_penny_gap(PennyGapModel &model, const FaceLoad &load,
+                                      const std::vector<double> &ring_radii, TimerOutput &timer,
+                                      const ResultFolder *fields)
   {
     const double             c         = model.gap_radius();
     const DisplacementVector u         = model.solve(load);
@@ -86,11 +76,9 @@ namespace penny
         {
           const RingExtension<2> ring(model.crack_tip(), rho * c, c);
           const double           G = j_integral.energy_release_rate(u, face_traction(load), ring);
-          results.rings.push_back({ rho,
-                                    G,
-                                    std::sqrt(e_prime * std::max(G, 0.)),
-                                    j_integral.signed_stress_intensity_factor(
-                                        u, face_traction(load), u_ref, face_traction(reference), ring) });
+          results.rings.push_back({rho, G, std::sqrt(e_prime * std::max(G, 0.)),
+                                   j_integral.signed_stress_intensity_factor(
+                                       u, face_traction(load), u_ref, face_traction(reference), ring)});
         }
       const SneddonSolution exact(load, c, e_prime);
       results.exact_stress_intensity_factor = exact.stress_intensity_factor();
@@ -109,33 +97,29 @@ namespace penny
       {
         TimerOutput::Scope scope(timer, "output");
         const double       largest = *std::max_element(ring_radii.begin(), ring_radii.end());
-        write_fields(model.get_system(), u, RingExtension<2>(model.crack_tip(), largest * c, c), *fields);
+        write_fields(model.get_system(), u, RingExtension<2>(model.crack_tip(), largest * c, c), model.crack_tip(),
+                     *fields);
+        write_opening_profile(model.get_system(), u, load, c, model.material().plane_strain_modulus(), *fields);
       }
     return results;
   }
 
-  PennySceneResults
-  solve_penny_gap(const PennyGapModelParameters &model,
-                  const LoadParameters          &load,
-                  const std::vector<double>     &ring_radii,
-                  TimerOutput                   &timer)
+  PennySceneResults solve_penny_gap(const PennyGapModelParameters &model, const LoadParameters &load,
+                                    const std::vector<double> &ring_radii, TimerOutput &timer)
   {
     PennyGapModel gap(model, timer);
     return measure_penny_gap(gap, FaceLoad(load, model.geometry.gap_radius), ring_radii, timer);
   }
 
-  PennySceneResults
-  run_penny_gap_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+  PennySceneResults run_penny_gap_scene(const Parameters &parameters, const ResultFolder &results,
+                                        std::ostream &log)
   {
     TimerOutput             timer(log, TimerOutput::never, TimerOutput::wall_times);
     const auto              model = penny_gap_model(parameters);
     PennyGapModel           gap(model, timer);
-    const PennySceneResults solved =
-        measure_penny_gap(gap,
-                          FaceLoad(parameters.load.value(), model.geometry.gap_radius),
-                          parameters.j_integral->ring_radii,
-                          timer,
-                          parameters.fields->write_fields ? &results : nullptr);
+    const PennySceneResults solved = measure_penny_gap(
+        gap, FaceLoad(parameters.load.value(), model.geometry.gap_radius), parameters.j_integral->ring_radii,
+        timer, parameters.fields->write_fields ? &results : nullptr);
 
     const Table rings   = ring_table(solved);
     const Table summary = summary_table(solved, model.degree, timer);

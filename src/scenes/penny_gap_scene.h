@@ -39,19 +39,15 @@ namespace penny
   // Solve, J-integrals on the rings (radii in units of c) and closed forms on
   // a model already built (perhaps adaptively refined); the fields go to
   // `fields` unless it is null.
-  PennySceneResults measure_penny_gap(PennyGapModel             &model,
-                                      const FaceLoad            &load,
-                                      const std::vector<double> &ring_radii,
-                                      dealii::TimerOutput       &timer,
-                                      const ResultFolder        *fields = nullptr);
+  PennySceneResults measure_penny_gap(PennyGapModel &model, const FaceLoad &load,
+                                      const std::vector<double> &ring_radii, dealii::TimerOutput &timer,
+                                      const ResultFolder *fields = nullptr);
 
   // The same on a model built for `model`.
-  PennySceneResults solve_penny_gap(const PennyGapModelParameters &model,
-                                    const LoadParameters          &load,
-                                    const std::vector<double>     &ring_radii,
-                                    dealii::TimerOutput           &timer);
+  PennySceneResults solve_penny_gap(const PennyGapModelParameters &model, const LoadParameters &load,
+                                    const std::vector<double> &ring_radii, dealii::TimerOutput &timer);
 
   // The scene: the table printed and the result files written.
-  PennySceneResults
-  run_penny_gap_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log);
+  PennySceneResults run_penny_gap_scene(const Parameters &parameters, const ResultFolder &results,
+                                        std::ostream &log);
 } // namespace penny

@@ -1,5 +1,6 @@
 #include "scenes/scene_registry.h"
 
+#include "fracture/adhesive_gap.h"
 #include "input/input_error.h"
 #include "scenes/adhesion_scenes.h"
 #include "scenes/convergence_scene.h"
@@ -10,6 +11,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <set>
 #include <sstream>
 
 namespace penny
@@ -21,19 +23,17 @@ namespace penny
     using S = Section;
 
     // The sections of every penny-gap FE model, and more.
-    std::vector<Section>
-    fe_and(std::vector<Section> more)
+    std::vector<Section> fe_and(std::vector<Section> more)
     {
-      std::vector<Section> sections = { S::geometry,       S::material,      S::load,       S::mesh,
-                                        S::finite_element, S::linear_solver, S::j_integral, S::output };
+      std::vector<Section> sections = {S::geometry,       S::material,      S::load,       S::mesh,
+                                       S::finite_element, S::linear_solver, S::j_integral, S::output};
       sections.insert(sections.end(), more.begin(), more.end());
       return sections;
     }
 
     // An entry point whose results carry no verdict of their own.
     template <typename Run>
-    std::function<Verdict(const Parameters &, const ResultFolder &, std::ostream &)>
-    without_verdict(Run run)
+    std::function<Verdict(const Parameters &, const ResultFolder &, std::ostream &)> without_verdict(Run run)
     {
       return [run](const Parameters &parameters, const ResultFolder &results, std::ostream &log) {
         run(parameters, results, log);
@@ -41,19 +41,68 @@ namespace penny
       };
     }
 
-    Verdict
-    stability_verdict(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+    Verdict stability_verdict(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
     {
       const auto rows     = run_stability_scene(parameters, results, log);
       const auto failures = std::count_if(
           rows.begin(), rows.end(), [](const StabilityRow &row) { return row.status.rfind("FAIL", 0) == 0; });
       if (failures == 0)
-        return {};
-      return { false, std::to_string(failures) + " stability case(s) failed; see stability.csv" };
+        return {true, "every stability case passes or is flagged with its reason"};
+      return {false, std::to_string(failures) + " stability case(s) failed; see stability.csv"};
     }
 
-    std::vector<std::string>
-    scene_names()
+    // K_I on every ring, w(0) and the gap volume against the closed forms.
+    Verdict penny_gap_verdict(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+    {
+      const PennySceneResults solved = run_penny_gap_scene(parameters, results, log);
+      double worst = std::max(relative_error(solved.opening_at_centre, solved.exact_opening_at_centre),
+                              relative_error(solved.gap_volume, solved.exact_gap_volume));
+      for (const auto &ring : solved.rings)
+        worst = std::max(
+            worst, relative_error(ring.signed_stress_intensity_factor, solved.exact_stress_intensity_factor));
+      return verdict("largest relative error of K_I, w(0) and the volume", worst,
+                     parameters.verification->tolerance);
+    }
+
+    Verdict gap_size_verdict(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+    {
+      const double c_over_a = run_gap_size_scene(parameters, results, log).c_over_a;
+      return verdict("relative error of c/a", relative_error(c_over_a, closed_form::adhesionless_c_over_a),
+                     parameters.verification->tolerance);
+    }
+
+    // psi is the value of a minimum, c_min its place: c_min carries the square
+    // root of the FE error and is reported, not judged.
+    Verdict adhesive_minimum_verdict(const Parameters &parameters, const ResultFolder &results,
+                                     std::ostream &log)
+    {
+      const double psi = run_adhesive_minimum_scene(parameters, results, log).psi;
+      return verdict("relative error of psi", relative_error(psi, closed_form::psi),
+                     parameters.verification->tolerance);
+    }
+
+    Verdict gap_tension_verdict(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+    {
+      return verdict("largest relative error of p_hat", run_gap_tension_curve_scene(parameters, results, log),
+                     parameters.verification->tolerance);
+    }
+
+    Verdict equilibrium_verdict(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+    {
+      const auto fe = run_adhesive_equilibrium_scene(parameters, results, log);
+      const auto exact =
+          closed_form::stable_gap_radius(parameters.load->peak_tension, parameters.load->summit_radius,
+                                         parameters.adhesion->critical_stress_intensity);
+      if (fe.has_value() != exact.has_value())
+        return {false, std::string("FE and closed form disagree on whether the gap closes (FE: ") +
+                           (fe ? "open" : "closed") + ")"};
+      if (!fe)
+        return {true, "FE and closed form agree: the gap closes"};
+      return verdict("relative error of c_t", relative_error(*fe, *exact),
+                     parameters.verification->tolerance);
+    }
+
+    std::vector<std::string> scene_names()
     {
       std::vector<std::string> names;
       for (const auto &scene : scene_registry())
@@ -61,8 +110,7 @@ namespace penny
       return names;
     }
 
-    std::string
-    scene_documentation()
+    std::string scene_documentation()
     {
       std::string doc = "What the run computes:";
       for (const auto &scene : scene_registry())
@@ -71,71 +119,56 @@ namespace penny
     }
   } // namespace
 
-  const std::vector<Scene> &
-  scene_registry()
+  // clang-format off
+  const std::vector<Scene> &scene_registry()
   {
     static const std::vector<Scene> registry = {
-      { "penny-gap",
-        "one FE solve of the Load; K_I from J-integrals (and the signed K_I) on every ring, the face opening "
-        "and the gap "
-        "volume, beside Sneddon's closed forms",
-        fe_and({ S::fields }),
-        without_verdict(run_penny_gap_scene) },
-      { "gap-size-adhesionless",
-        "the gap radius where the FE K_I of the parabola (P, a) vanishes: c/a = sqrt(3/2)",
-        fe_and({}),
-        without_verdict(run_gap_size_scene) },
-      { "adhesive-minimum",
-        "the minimum over c of the FE peak tension P(c) at K_I = K_Ic: psi and c_min",
-        fe_and({ S::adhesion }),
-        without_verdict(run_adhesive_minimum_scene) },
-      { "gap-tension-curve",
-        "p_hat(c_hat) from FE beside (c_hat^2 + 4/sqrt(c_hat))/5 (paper Fig. 2)",
-        fe_and({ S::adhesion, S::gap_tension_curve }),
-        without_verdict(run_gap_tension_curve_scene) },
-      { "adhesive-equilibrium",
-        "the FE gap radius on the stable branch for the peak tension P (the paper's g)",
-        fe_and({ S::adhesion }),
-        without_verdict(run_adhesive_equilibrium_scene) },
-      { "stability",
-        "stiff and extreme cases around the scene's parameters, each passing or flagged, in one table",
-        fe_and({ S::stability }),
-        stability_verdict },
-      { "convergence",
-        "the penny-gap solve over the sequence of discretisations in 'Convergence'",
-        fe_and({ S::convergence }),
-        without_verdict(run_convergence_scene) },
-      { "sinusoid-contact",
-        "Johnson's adhesive 1D sinusoid from its closed form (paper Fig. 1)",
-        { S::sinusoid, S::output },
-        without_verdict(run_sinusoid_contact_scene) },
-      { "zero-load-gap-area",
-        "A_nc/A_0 at zero mean pressure against p0/sqrt(V) (paper Fig. 3)",
-        { S::material, S::adhesion, S::roughness, S::area_load, S::zero_load_gap_area, S::output },
-        without_verdict(run_zero_load_gap_area_scene) },
-      { "area-load",
-        "A_nc/A_0 and A_c/A_0 against p_bar/sqrt(V) for each H and zeta (paper Figs. 4 and 5)",
-        { S::material, S::adhesion, S::roughness, S::area_load, S::output },
-        without_verdict(run_area_load_scene) },
-      { "rough-surface",
-        "moments, summit statistics and p0 of the Roughness spectrum in both conventions, and its area-load "
-        "curve",
-        { S::material, S::adhesion, S::roughness, S::area_load, S::output },
-        without_verdict(run_rough_surface_scene) },
-      { "magnification-scaling",
-        "theta of p0/sqrt(V) ~ zeta^theta fitted from the moments, for each H",
-        { S::area_load, S::magnification_scaling, S::output },
-        without_verdict(run_magnification_scaling_scene) },
-      { "fe-gap-area",
-        "the area-load curve with the FE gap function g beside the closed-form g's",
-        fe_and({ S::adhesion, S::area_load, S::fe_gap_area }),
-        without_verdict(run_fe_gap_area_scene) }
-    };
+      {"penny-gap",
+       "one FE solve of the Load; K_I from J-integrals (and the signed K_I) on every ring, the face opening "
+       "and the gap volume, beside Sneddon's closed forms",
+       fe_and({S::fields, S::verification}), penny_gap_verdict},
+      {"gap-size-adhesionless",
+       "the gap radius where the FE K_I of the parabola (P, a) vanishes: c/a = sqrt(3/2)",
+       fe_and({S::verification}), gap_size_verdict},
+      {"adhesive-minimum",
+       "the minimum over c of the FE peak tension P(c) at K_I = K_Ic: psi and c_min",
+       fe_and({S::adhesion, S::verification}), adhesive_minimum_verdict},
+      {"gap-tension-curve",
+       "p_hat(c_hat) from FE beside (c_hat^2 + 4/sqrt(c_hat))/5 (paper Fig. 2)",
+       fe_and({S::adhesion, S::gap_tension_curve, S::verification}), gap_tension_verdict},
+      {"adhesive-equilibrium",
+       "the FE gap radius on the stable branch for the peak tension P (the paper's g)",
+       fe_and({S::adhesion, S::verification}), equilibrium_verdict},
+      {"stability",
+       "stiff and extreme cases around the scene's parameters, each passing or flagged, in one table",
+       fe_and({S::stability}), stability_verdict},
+      {"convergence",
+       "the penny-gap solve over the sequence of discretisations in 'Convergence'",
+       fe_and({S::convergence}), without_verdict(run_convergence_scene)},
+      {"sinusoid-contact",
+       "Johnson's adhesive 1D sinusoid from its closed form (paper Fig. 1)",
+       {S::sinusoid, S::output}, without_verdict(run_sinusoid_contact_scene)},
+      {"zero-load-gap-area",
+       "A_nc/A_0 at zero mean pressure against p0/sqrt(V) (paper Fig. 3)",
+       {S::material, S::adhesion, S::roughness, S::area_load, S::zero_load_gap_area, S::output},
+       without_verdict(run_zero_load_gap_area_scene)},
+      {"area-load",
+       "A_nc/A_0 and A_c/A_0 against p_bar/sqrt(V) for each H and zeta (paper Figs. 4 and 5)",
+       {S::material, S::adhesion, S::roughness, S::area_load, S::output}, without_verdict(run_area_load_scene)},
+      {"rough-surface",
+       "moments, summit statistics and p0 of the Roughness spectrum in both conventions, and its area-load curve",
+       {S::material, S::adhesion, S::roughness, S::area_load, S::output}, without_verdict(run_rough_surface_scene)},
+      {"magnification-scaling",
+       "theta of p0/sqrt(V) ~ zeta^theta fitted from the moments, for each H",
+       {S::area_load, S::magnification_scaling, S::output}, without_verdict(run_magnification_scaling_scene)},
+      {"fe-gap-area",
+       "the area-load curve with the FE gap function g beside the closed-form g's",
+       fe_and({S::adhesion, S::area_load, S::fe_gap_area}), without_verdict(run_fe_gap_area_scene)}};
     return registry;
   }
+  // clang-format on
 
-  const Scene &
-  find_scene(const std::string &name)
+  const Scene &find_scene(const std::string &name)
   {
     for (const auto &scene : scene_registry())
       if (scene.name == name)
@@ -143,14 +176,12 @@ namespace penny
     throw InputError("Scene = '" + name + "' is not a scene (penny --help lists them)");
   }
 
-  void
-  declare_scene(ParameterHandler &prm, const Scene &scene)
+  void declare_scene(ParameterHandler &prm, const Scene &scene)
   {
     Parameters::declare(prm, scene_names(), scene_documentation(), scene.sections);
   }
 
-  SceneFile
-  read_scene_file(const std::string &filename)
+  SceneFile read_scene_file(const std::string &filename)
   {
     std::vector<Section> every_section;
     for (const auto &scene : scene_registry())
@@ -166,7 +197,7 @@ namespace penny
     declare_scene(prm, scene);
     parse_parameter_file(prm, filename, scene.name);
     const std::string  folder = std::filesystem::path(filename).parent_path().string();
-    SceneFile          file{ &scene, Parameters::parse(prm, scene.sections, folder), "" };
+    SceneFile          file{&scene, Parameters::parse(prm, scene.sections, folder), ""};
     std::ostringstream used;
     prm.print_parameters(used, ParameterHandler::PRM);
     file.used_parameters = used.str();
@@ -175,14 +206,25 @@ namespace penny
 
   // The output folder is checked before the scene runs, and the parameters
   // are recorded last: a run that fails leaves the previous results as they were.
-  Verdict
-  run_scene_file(const std::string &filename, std::ostream &log)
+  Verdict run_scene_file(const std::string &filename, std::ostream &log)
   {
     const SceneFile file = read_scene_file(filename);
-    ResultFolder    results(file.parameters.output.value().directory, filename);
-    const Verdict   verdict = file.scene->run(file.parameters, results, log);
+    log << "penny: scene " << file.scene->name << " (" << filename << "): " << file.scene->description
+        << "\n\n";
+    ResultFolder  results(file.parameters.output.value().directory, filename);
+    const Verdict verdict = file.scene->run(file.parameters, results, log);
     results.write("parameters.prm", file.used_parameters);
     results.commit();
+
+    std::set<std::string> files;
+    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+      for (const auto &entry : std::filesystem::directory_iterator(results.directory()))
+        if (entry.path().filename().string().front() != '.')
+          files.insert(entry.path().filename().string());
+    log << "\nResults in " << results.directory().string() << "/:";
+    for (const auto &file : files)
+      log << ' ' << file;
+    log << '\n';
     return verdict;
   }
 } // namespace penny

@@ -5,6 +5,7 @@
 
 #include "input/parameters.h"
 #include "output/result_folder.h"
+#include "scenes/scene_support.h"
 
 #include <deal.II/base/parameter_handler.h>
 
@@ -15,14 +16,6 @@
 
 namespace penny
 {
-  // A scene's judgement of its own results: a failed check is reported after
-  // the results are written, and makes the run exit non-zero.
-  struct Verdict
-  {
-    bool        passed = true;
-    std::string reason;
-  };
-
   struct Scene
   {
     std::string                                                                      name;
@@ -51,6 +44,7 @@ namespace penny
   };
   SceneFile read_scene_file(const std::string &filename);
 
-  // Reads the file, runs its scene and moves the results into place.
+  // Reads the file, says which scene runs, runs it, moves the results into
+  // place and says where they went.
   Verdict run_scene_file(const std::string &filename, std::ostream &log);
 } // namespace penny

@@ -1,21 +1,26 @@
 #include "scenes/scene_support.h"
 
 #include <iostream>
+#include <sstream>
 
 namespace penny
 {
-  PennyGapModelParameters
-  penny_gap_model(const Parameters &parameters)
+  Verdict verdict(const std::string &what, const double error, const double tolerance)
   {
-    return { parameters.geometry.value(),
-             parameters.material.value(),
-             parameters.mesh.value(),
-             parameters.finite_element.value().degree,
-             parameters.linear_solver.value() };
+    std::ostringstream message;
+    message.precision(2);
+    message << std::scientific << what << ' ' << error << (error <= tolerance ? " <= " : " > ")
+            << "Verification/Tolerance = " << tolerance;
+    return {error <= tolerance, message.str()};
   }
 
-  double
-  total_wall_time(const dealii::TimerOutput &timer)
+  PennyGapModelParameters penny_gap_model(const Parameters &parameters)
+  {
+    return {parameters.geometry.value(), parameters.material.value(), parameters.mesh.value(),
+            parameters.finite_element.value().degree, parameters.linear_solver.value()};
+  }
+
+  double total_wall_time(const dealii::TimerOutput &timer)
   {
     double total = 0;
     for (const auto &phase : timer.get_summary_data(dealii::TimerOutput::total_wall_time))
@@ -23,11 +28,28 @@ namespace penny
     return total;
   }
 
-  GapSearch::GapSearch(const Parameters &parameters)
+  void add_phase_times(Table &summary, const dealii::TimerOutput &timer)
+  {
+    const auto times = timer.get_summary_data(dealii::TimerOutput::total_wall_time);
+    for (const std::string phase :
+         {"mesh", "setup", "assembly", "solve", "J-integral", "closed form", "output"})
+      if (times.count(phase))
+        summary.add_row(
+            {"wall time " + phase + " (s)", Table::Cell(times.at(phase), Table::Format{3, false})});
+    summary.add_row({"wall time total (s)", Table::Cell(total_wall_time(timer), Table::Format{3, false})});
+  }
+
+  GapSearch::GapSearch(const Parameters &parameters, std::ostream &log)
       : timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times),
         gaps(penny_gap_model(parameters), parameters.j_integral.value().ring_radii.back(), timer),
-        summit_radius(parameters.load.value().summit_radius),
+        progress(log, "gap radii solved"), summit_radius(parameters.load.value().summit_radius),
         critical_stress_intensity(parameters.adhesion ? parameters.adhesion->critical_stress_intensity : 0)
   {
+    gaps.observe([this](const double c) {
+      std::ostringstream state;
+      state.precision(10);
+      state << "last c = " << c << " m";
+      progress.step(state.str());
+    });
   }
 } // namespace penny

@@ -25,6 +25,6 @@ namespace penny
     std::string status;    // "pass", "flagged: <reason>" or "FAIL: <reason>"
   };
 
-  std::vector<StabilityRow>
-  run_stability_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log);
+  std::vector<StabilityRow> run_stability_scene(const Parameters &parameters, const ResultFolder &results,
+                                                std::ostream &log);
 } // namespace penny

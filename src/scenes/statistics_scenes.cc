@@ -14,13 +14,12 @@ namespace penny
 {
   namespace
   {
-    const Table::Format error_digits{ 2, true };
+    const Table::Format error_digits{2, true};
 
     // The gaps of the power-law surface (H, zeta): the paper's normalised
     // population, or the consistent one from the moments of the Roughness
     // spectrum with this H and zeta.
-    GapPopulation
-    population(const Parameters &parameters, const double hurst, const double zeta)
+    GapPopulation population(const Parameters &parameters, const double hurst, const double zeta)
     {
       if (parameters.area_load->convention_is_paper)
         return paper_population(hurst, zeta);
@@ -29,12 +28,10 @@ namespace penny
           spectral_moments(power_law_spectrum(hurst, roughness.q0, zeta, roughness.amplitude));
       return surface_population(
           pressure_summits(moments, parameters.material->plane_strain_modulus(), Convention::consistent),
-          parameters.adhesion->critical_stress_intensity,
-          Convention::consistent);
+          parameters.adhesion->critical_stress_intensity, Convention::consistent);
     }
 
-    std::string
-    convention_line(const Parameters &parameters)
+    std::string convention_line(const Parameters &parameters)
     {
       return parameters.area_load->convention_is_paper
                  ? "convention: paper (3 pi R_p eta sqrt(V) = sqrt(2 pi), p0/sqrt(V) = zeta^theta)"
@@ -42,8 +39,7 @@ namespace penny
     }
 
     // A number as a column name shows it: 0.2, 1e+16.
-    std::string
-    name_of(const double value)
+    std::string name_of(const double value)
     {
       std::ostringstream text;
       text << value;
@@ -51,20 +47,20 @@ namespace penny
     }
   } // namespace
 
-  void
-  run_sinusoid_contact_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+  void run_sinusoid_contact_scene(const Parameters &parameters, const ResultFolder &results,
+                                  std::ostream &log)
   {
     const auto                &sinusoid = *parameters.sinusoid;
-    std::vector<Table::Column> columns  = { { "a/lambda" } };
+    std::vector<Table::Column> columns  = {{"a/lambda"}};
     for (const double alpha : sinusoid.alphas)
-      columns.push_back({ "p/p* alpha=" + name_of(alpha) });
+      columns.push_back({"p/p* alpha=" + name_of(alpha)});
     Table                            table(columns);
     std::vector<std::vector<double>> loads(sinusoid.alphas.size());
     std::vector<double>              ratios;
     for (unsigned int i = 1; i <= sinusoid.n_points; ++i)
       {
         ratios.push_back(0.5 * i / (sinusoid.n_points + 1));
-        std::vector<Table::Cell> row = { ratios.back() };
+        std::vector<Table::Cell> row = {ratios.back()};
         for (unsigned int k = 0; k < sinusoid.alphas.size(); ++k)
           {
             loads[k].push_back(johnson_sinusoid_load(ratios.back(), sinusoid.alphas[k]));
@@ -76,7 +72,7 @@ namespace penny
 
     // The jump into full contact is the curve's maximum inside (0, 1/2), or
     // its end a -> lambda/2 without adhesion.
-    Table jumps({ { "alpha" }, { "jump into full contact at p/p*" }, { "a/lambda" } });
+    Table jumps({{"alpha"}, {"jump into full contact at p/p*"}, {"a/lambda"}});
     for (unsigned int k = 0; k < sinusoid.alphas.size(); ++k)
       {
         const auto  &load = loads[k];
@@ -85,7 +81,7 @@ namespace penny
           if (load[i] >= load[i - 1] && load[i] >= load[i + 1] &&
               (best == load.size() - 1 || load[i] > load[best]))
             best = i;
-        jumps.add_row({ sinusoid.alphas[k], load[best], ratios[best] });
+        jumps.add_row({sinusoid.alphas[k], load[best], ratios[best]});
       }
     log << "Johnson's adhesive 1D sinusoid: p/p* = sin^2(pi a/lambda) - alpha sqrt(tan(pi a/lambda))\n"
         << "(the jump: the largest interior maximum on the grid)\n";
@@ -93,39 +89,37 @@ namespace penny
     log << "Table: " << results.directory().string() << "/sinusoid-contact.csv\n";
   }
 
-  double
-  run_zero_load_gap_area_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+  double run_zero_load_gap_area_scene(const Parameters &parameters, const ResultFolder &results,
+                                      std::ostream &log)
   {
     const auto  &range   = *parameters.area_load;
     const double largest = parameters.zero_load_gap_area->largest_adhesion_ratio;
     const auto   surface = population(parameters, parameters.roughness->hurst, parameters.roughness->zeta);
     double       worst   = 0;
-    Table        table({ { "p0/sqrtV" },
-                         { "A_nc linear closed form" },
-                         { "A_nc linear integral" },
-                         { "A_nc exact g" },
-                         { "A_c Persson-type" } });
+    Table        table({{"p0/sqrtV"},
+                        {"A_nc linear closed form"},
+                        {"A_nc linear integral"},
+                        {"A_nc exact g"},
+                        {"A_c Persson-type"}});
     for (unsigned int i = 0; i < range.n_points; ++i)
       {
-        const GapPopulation gaps{ surface.prefactor, largest * i / (range.n_points - 1) };
+        const GapPopulation gaps{surface.prefactor, largest * i / (range.n_points - 1)};
         const double        closed   = linear_law_noncontact_area(gaps, 0);
         const double        integral = noncontact_area(gaps, linear_gap_law(gaps.adhesion), 0);
         worst                        = std::max(worst, relative_error(integral, closed));
-        table.add_row({ gaps.adhesion,
-                        closed,
-                        integral,
-                        noncontact_area(gaps, exact_gap_law(gaps.adhesion), 0),
-                        persson_contact_area(gaps.adhesion, 0) });
+        table.add_row({gaps.adhesion, closed, integral,
+                       noncontact_area(gaps, exact_gap_law(gaps.adhesion), 0),
+                       persson_contact_area(gaps.adhesion, 0)});
       }
     results.write_csv("zero-load-gap-area.csv", table);
 
-    const GapPopulation last{ surface.prefactor, largest };
+    const GapPopulation last{surface.prefactor, largest};
     Table               summary = Table::summary();
-    summary.add_row({ "prefactor 3 pi R_p eta sqrt(V)", surface.prefactor });
-    summary.add_row({ "largest p0/sqrt(V)", last.adhesion });
-    summary.add_row({ "... A_nc/A_0, linear law", linear_law_noncontact_area(last, 0) });
-    summary.add_row({ "... A_nc/A_0, exact g", noncontact_area(last, exact_gap_law(last.adhesion), 0) });
-    summary.add_row({ "largest |integral/closed form - 1|, linear law", Table::Cell(worst, error_digits) });
+    summary.add_row({"prefactor 3 pi R_p eta sqrt(V)", surface.prefactor});
+    summary.add_row({"largest p0/sqrt(V)", last.adhesion});
+    summary.add_row({"... A_nc/A_0, linear law", linear_law_noncontact_area(last, 0)});
+    summary.add_row({"... A_nc/A_0, exact g", noncontact_area(last, exact_gap_law(last.adhesion), 0)});
+    summary.add_row({"largest |integral/closed form - 1|, linear law", Table::Cell(worst, error_digits)});
     log << "Non-contact area at zero mean pressure against p0/sqrt(V) (paper Fig. 3)\n"
         << convention_line(parameters) << '\n';
     summary.print(log);
@@ -133,32 +127,33 @@ namespace penny
     return worst;
   }
 
-  double
-  run_area_load_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+  double run_area_load_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
   {
     const auto &range = *parameters.area_load;
     double      worst = 0;
-    Table       table({ { "H" },
-                        { "zeta" },
-                        { "p0/sqrtV" },
-                        { "p_bar/sqrtV" },
-                        { "A_nc linear closed form" },
-                        { "A_nc linear integral" },
-                        { "A_nc exact g" },
-                        { "A_nc adhesionless" },
-                        { "A_c Persson-type" },
-                        { "A_c Persson-type adhesionless" } });
-    Table       summary({ { "H" },
-                          { "zeta" },
-                          { "p0/sqrt(V)" },
-                          { "prefactor" },
-                          { "A_nc(p_bar = 0), linear law" },
-                          { "A_nc(p_bar = 0), exact g" } });
+    Table       table({{"H"},
+                       {"zeta"},
+                       {"p0/sqrtV"},
+                       {"p_bar/sqrtV"},
+                       {"A_nc linear closed form"},
+                       {"A_nc linear integral"},
+                       {"A_nc exact g"},
+                       {"A_nc adhesionless"},
+                       {"A_c Persson-type"},
+                       {"A_c Persson-type adhesionless"},
+                       {"A_nc linear > 1"},
+                       {"A_nc exact g > 1"}});
+    Table       summary({{"H"},
+                         {"zeta"},
+                         {"p0/sqrt(V)"},
+                         {"prefactor"},
+                         {"A_nc(p_bar = 0), linear law"},
+                         {"A_nc(p_bar = 0), exact g"}});
     for (const double hurst : range.hurst_exponents)
       for (const double zeta : range.magnifications)
         {
           const GapPopulation gaps = population(parameters, hurst, zeta);
-          const GapPopulation adhesionless{ gaps.prefactor, 0 };
+          const GapPopulation adhesionless{gaps.prefactor, 0};
           const auto          exact = exact_gap_law(gaps.adhesion);
           for (unsigned int i = 0; i < range.n_points; ++i)
             {
@@ -166,23 +161,16 @@ namespace penny
               const double closed   = linear_law_noncontact_area(gaps, p_bar);
               const double integral = noncontact_area(gaps, linear_gap_law(gaps.adhesion), p_bar);
               worst                 = std::max(worst, relative_error(integral, closed));
-              table.add_row({ hurst,
-                              zeta,
-                              gaps.adhesion,
-                              p_bar,
-                              closed,
-                              integral,
-                              noncontact_area(gaps, exact, p_bar),
-                              linear_law_noncontact_area(adhesionless, p_bar),
-                              persson_contact_area(gaps.adhesion, p_bar),
-                              persson_contact_area(0, p_bar) });
+              // At negative loads the isolated-gap laws exceed the whole area:
+              // flagged, they are no area fractions.
+              const double exact_area = noncontact_area(gaps, exact, p_bar);
+              table.add_row({hurst, zeta, gaps.adhesion, p_bar, closed, integral, exact_area,
+                             linear_law_noncontact_area(adhesionless, p_bar),
+                             persson_contact_area(gaps.adhesion, p_bar), persson_contact_area(0, p_bar), closed > 1,
+                             exact_area > 1});
             }
-          summary.add_row({ hurst,
-                            zeta,
-                            gaps.adhesion,
-                            gaps.prefactor,
-                            linear_law_noncontact_area(gaps, 0),
-                            noncontact_area(gaps, exact, 0) });
+          summary.add_row({hurst, zeta, gaps.adhesion, gaps.prefactor, linear_law_noncontact_area(gaps, 0),
+                           noncontact_area(gaps, exact, 0)});
         }
     results.write_csv("area-load.csv", table);
     log << "Area-load curves, A_nc/A_0 against p_bar/sqrt(V) from " << range.smallest_mean_pressure << " to "
@@ -196,8 +184,7 @@ namespace penny
     return worst;
   }
 
-  void
-  run_rough_surface_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+  void run_rough_surface_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
   {
     const auto  &roughness = *parameters.roughness;
     const double E_star    = parameters.material->plane_strain_modulus();
@@ -209,30 +196,28 @@ namespace penny
     const SpectralMoments m = spectral_moments(spectrum);
 
     Table moments = Table::summary();
-    moments.add_row(
-        { "spectrum",
-          from_file ? "file " + roughness.spectrum_file
-                    : "power law H = " + name_of(roughness.hurst) + ", zeta = " + name_of(roughness.zeta) });
-    moments.add_row({ "m0 (m^2)", m.m0 });
-    moments.add_row({ "m2", m.m2 });
-    moments.add_row({ "m4 (1/m^2)", m.m4 });
-    moments.add_row({ "m6 (1/m^4)", m.m6 });
-    moments.add_row({ "E* (Pa)", E_star });
-    moments.add_row({ "K_Ic (Pa m^1/2)", K_Ic });
+    moments.add_row({"spectrum", from_file ? "file " + roughness.spectrum_file
+                                           : "power law H = " + name_of(roughness.hurst) +
+                                                 ", zeta = " + name_of(roughness.zeta)});
+    moments.add_row({"m0 (m^2)", m.m0});
+    moments.add_row({"m2", m.m2});
+    moments.add_row({"m4 (1/m^2)", m.m4});
+    moments.add_row({"m6 (1/m^4)", m.m6});
+    moments.add_row({"E* (Pa)", E_star});
+    moments.add_row({"K_Ic (Pa m^1/2)", K_Ic});
 
-    const PressureSummits summits[2] = { pressure_summits(m, E_star, Convention::paper),
-                                         pressure_summits(m, E_star, Convention::consistent) };
-    const GapPopulation   gaps[2]    = { surface_population(summits[0], K_Ic, Convention::paper),
-                                         surface_population(summits[1], K_Ic, Convention::consistent) };
-    Table      conventions({ { "quantity" }, { "paper" }, { "consistent" }, { "consistent/paper" } });
-    const auto row = [&](const std::string &name, const double paper, const double consistent) {
-      conventions.add_row({ name, paper, consistent, consistent / paper });
+    const PressureSummits summits[2] = {pressure_summits(m, E_star, Convention::paper),
+                                        pressure_summits(m, E_star, Convention::consistent)};
+    const GapPopulation   gaps[2]    = {surface_population(summits[0], K_Ic, Convention::paper),
+                                        surface_population(summits[1], K_Ic, Convention::consistent)};
+    Table                 conventions({{"quantity"}, {"paper"}, {"consistent"}, {"consistent/paper"}});
+    const auto            row = [&](const std::string &name, const double paper, const double consistent) {
+      conventions.add_row({name, paper, consistent, consistent / paper});
     };
     row("V (Pa^2)", summits[0].variance, summits[1].variance);
     row("eta (1/m^2)", summits[0].density, summits[1].density);
     row("R_p (m^2/Pa)", summits[0].summit_radius, summits[1].summit_radius);
-    row("p0 (Pa)",
-        gaps[0].adhesion * std::sqrt(summits[0].variance),
+    row("p0 (Pa)", gaps[0].adhesion * std::sqrt(summits[0].variance),
         gaps[1].adhesion * std::sqrt(summits[1].variance));
     row("p0/sqrt(V)", gaps[0].adhesion, gaps[1].adhesion);
     row("3 pi R_p eta sqrt(V)",
@@ -240,19 +225,18 @@ namespace penny
         gaps[1].prefactor);
 
     const auto &range = *parameters.area_load;
-    Table       curve({ { "p_bar/sqrtV" },
-                        { "A_nc paper" },
-                        { "A_nc consistent" },
-                        { "A_nc paper exact g" },
-                        { "A_nc consistent exact g" } });
+    Table       curve({{"p_bar/sqrtV"},
+                       {"A_nc paper"},
+                       {"A_nc consistent"},
+                       {"A_nc paper exact g"},
+                       {"A_nc consistent exact g"}});
     for (unsigned int i = 0; i < range.n_points; ++i)
       {
         const double p_bar = range.mean_pressure(i);
-        curve.add_row({ p_bar,
-                        linear_law_noncontact_area(gaps[0], p_bar),
-                        linear_law_noncontact_area(gaps[1], p_bar),
-                        noncontact_area(gaps[0], exact_gap_law(gaps[0].adhesion), p_bar),
-                        noncontact_area(gaps[1], exact_gap_law(gaps[1].adhesion), p_bar) });
+        curve.add_row({p_bar, linear_law_noncontact_area(gaps[0], p_bar),
+                       linear_law_noncontact_area(gaps[1], p_bar),
+                       noncontact_area(gaps[0], exact_gap_law(gaps[0].adhesion), p_bar),
+                       noncontact_area(gaps[1], exact_gap_law(gaps[1].adhesion), p_bar)});
       }
     results.write_csv("rough-surface.csv", curve);
     results.write_csv("rough-surface-moments.csv", moments);
@@ -272,28 +256,26 @@ namespace penny
            "rough-surface-conventions.csv\n";
   }
 
-  double
-  run_magnification_scaling_scene(const Parameters   &parameters,
-                                  const ResultFolder &results,
-                                  std::ostream       &log)
+  double run_magnification_scaling_scene(const Parameters &parameters, const ResultFolder &results,
+                                         std::ostream &log)
   {
     const auto &fit   = *parameters.magnification_scaling;
     double      worst = 0;
-    Table       table({ { "H" },
-                        { "theta (2/5)(2H-1)" },
-                        { "theta fit paper" },
-                        { "theta fit consistent" },
-                        { "largest |fit - theta|", error_digits } });
+    Table       table({{"H"},
+                       {"theta (2/5)(2H-1)"},
+                       {"theta fit paper"},
+                       {"theta fit consistent"},
+                       {"largest |fit - theta|", error_digits}});
     for (const double hurst : parameters.area_load->hurst_exponents)
       {
         const double theta = scaling_exponent(hurst);
         double       fits[2];
-        for (const Convention convention : { Convention::paper, Convention::consistent })
+        for (const Convention convention : {Convention::paper, Convention::consistent})
           fits[convention == Convention::consistent] = fitted_scaling_exponent(
               hurst, fit.first_fit_magnification, fit.last_fit_magnification, 41, convention);
         const double error = std::max(std::abs(fits[0] - theta), std::abs(fits[1] - theta));
         worst              = std::max(worst, error);
-        table.add_row({ hurst, theta, fits[0], fits[1], error });
+        table.add_row({hurst, theta, fits[0], fits[1], error});
       }
     results.write_csv("magnification-scaling.csv", table);
     log << "Magnification exponent: p0/sqrt(V) ~ zeta^theta, least-squares fit of the moments' values over "

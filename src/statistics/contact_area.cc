@@ -11,39 +11,35 @@ namespace penny
 {
   namespace
   {
-    double
-    standard_normal(const double x)
+    double standard_normal(const double x)
     {
       return std::exp(-x * x / 2) / std::sqrt(2 * M_PI);
     }
 
     // The j-th of n Chebyshev points of the second kind on [0, t_max].
-    double
-    chebyshev_point(const double t_max, const unsigned int j, const unsigned int n)
+    double chebyshev_point(const double t_max, const unsigned int j, const unsigned int n)
     {
       return t_max * (1 - std::cos(j * M_PI / (n - 1))) / 2;
     }
   } // namespace
 
-  GapPopulation
-  paper_population(const double hurst, const double zeta)
+  GapPopulation paper_population(const double hurst, const double zeta)
   {
-    return { std::sqrt(2 * M_PI), std::pow(zeta, scaling_exponent(hurst)) };
+    return {std::sqrt(2 * M_PI), std::pow(zeta, scaling_exponent(hurst))};
   }
 
-  GapPopulation
-  surface_population(const PressureSummits &summits, const double K_Ic, const Convention convention)
+  GapPopulation surface_population(const PressureSummits &summits, const double K_Ic,
+                                   const Convention convention)
   {
     const double prefactor =
         convention == Convention::paper
             ? std::sqrt(2 * M_PI)
             : 3 * M_PI * summits.summit_radius * summits.density * std::sqrt(summits.variance);
-    return { prefactor, adhesion_ratio(summits, K_Ic) };
+    return {prefactor, adhesion_ratio(summits, K_Ic)};
   }
 
   // In units with sqrt(V) = 1 and R_p = 1, p0 = psi K_Ic^(4/5) fixes K_Ic.
-  GapAreaLaw
-  exact_gap_law(const double adhesion)
+  GapAreaLaw exact_gap_law(const double adhesion)
   {
     if (adhesion == 0)
       return linear_gap_law(0);
@@ -57,22 +53,19 @@ namespace penny
     };
   }
 
-  GapAreaLaw
-  linear_gap_law(const double adhesion)
+  GapAreaLaw linear_gap_law(const double adhesion)
   {
     return [adhesion](const double P) { return P - adhesion; };
   }
 
-  double
-  integration_limit(const double adhesion, const double mean_pressure)
+  double integration_limit(const double adhesion, const double mean_pressure)
   {
     // Beyond P + p_bar = 12 (or 12 past the bulk when p_bar + p0 < 0) the
     // Gaussian weight is below 1e-31 of its peak.
     return std::sqrt(std::max(0., -(adhesion + mean_pressure)) + 12);
   }
 
-  double
-  noncontact_area(const GapPopulation &gaps, const GapAreaLaw &law, const double mean_pressure)
+  double noncontact_area(const GapPopulation &gaps, const GapAreaLaw &law, const double mean_pressure)
   {
     const auto integrand = [&](const double t) {
       const double P = gaps.adhesion + t * t;
@@ -84,21 +77,19 @@ namespace penny
     return gaps.prefactor * integral;
   }
 
-  double
-  linear_law_noncontact_area(const GapPopulation &gaps, const double mean_pressure)
+  double linear_law_noncontact_area(const GapPopulation &gaps, const double mean_pressure)
   {
     const double x = mean_pressure + gaps.adhesion;
     return gaps.prefactor * (standard_normal(x) - x / 2 * std::erfc(x / std::sqrt(2.)));
   }
 
-  double
-  persson_contact_area(const double adhesion, const double mean_pressure)
+  double persson_contact_area(const double adhesion, const double mean_pressure)
   {
     return std::max(0., std::erf((mean_pressure + adhesion) / std::sqrt(2.)));
   }
 
-  std::vector<double>
-  chebyshev_tensions(const double adhesion, const double t_max, const unsigned int n_points)
+  std::vector<double> chebyshev_tensions(const double adhesion, const double t_max,
+                                         const unsigned int n_points)
   {
     std::vector<double> tensions(n_points);
     for (unsigned int j = 0; j < n_points; ++j)
@@ -109,8 +100,7 @@ namespace penny
     return tensions;
   }
 
-  GapAreaLaw
-  tabulated_gap_law(const double adhesion, const double t_max, std::vector<double> gap_areas)
+  GapAreaLaw tabulated_gap_law(const double adhesion, const double t_max, std::vector<double> gap_areas)
   {
     const unsigned int  n = gap_areas.size();
     std::vector<double> nodes(n), weights(n);
@@ -137,8 +127,7 @@ namespace penny
     };
   }
 
-  double
-  johnson_sinusoid_load(const double contact_ratio, const double alpha)
+  double johnson_sinusoid_load(const double contact_ratio, const double alpha)
   {
     const double angle = M_PI * contact_ratio;
     return std::pow(std::sin(angle), 2) - alpha * std::sqrt(std::tan(angle));

@@ -11,15 +11,13 @@
 
 namespace penny
 {
-  PowerSpectrum
-  power_law_spectrum(const double hurst, const double q0, const double zeta, const double h0)
+  PowerSpectrum power_law_spectrum(const double hurst, const double q0, const double zeta, const double h0)
   {
     const double C0 = hurst / (2 * M_PI) * std::pow(h0 / q0, 2);
-    return { { q0, zeta * q0 }, { C0, C0 * std::pow(zeta, -2 * (hurst + 1)) } };
+    return {{q0, zeta * q0}, {C0, C0 * std::pow(zeta, -2 * (hurst + 1))}};
   }
 
-  PowerSpectrum
-  read_power_spectrum(const std::string &filename, const std::string &entry)
+  PowerSpectrum read_power_spectrum(const std::string &filename, const std::string &entry)
   {
     std::ifstream in(filename);
     if (!in)
@@ -49,8 +47,7 @@ namespace penny
     return spectrum;
   }
 
-  SpectralMoments
-  spectral_moments(const PowerSpectrum &spectrum)
+  SpectralMoments spectral_moments(const PowerSpectrum &spectrum)
   {
     // Radial moment 2 pi int q^(k+1) C dq of one segment C = C_a (q/q_a)^s:
     // 2 pi C_a q_a^(k+2) (r^e - 1)/e with r = q_b/q_a and e = k + 2 + s, written
@@ -68,22 +65,19 @@ namespace penny
       return sum;
     };
     // Along one line, q_x^n averages q^n cos^n over the angle: 1, 1/2, 3/8, 5/16.
-    return { radial_moment(0), radial_moment(2) / 2, radial_moment(4) * 3 / 8, radial_moment(6) * 5 / 16 };
+    return {radial_moment(0), radial_moment(2) / 2, radial_moment(4) * 3 / 8, radial_moment(6) * 5 / 16};
   }
 
-  std::string
-  to_string(const Convention convention)
+  std::string to_string(const Convention convention)
   {
     return convention == Convention::paper ? "paper" : "consistent";
   }
 
-  PressureSummits
-  pressure_summits(const SpectralMoments &m, const double E_star, const Convention convention)
+  PressureSummits pressure_summits(const SpectralMoments &m, const double E_star, const Convention convention)
   {
     if (convention == Convention::paper)
-      return { E_star * E_star * m.m2 / 4,
-               m.m6 / (6 * std::sqrt(M_PI) * m.m4),
-               0.375 * std::sqrt(2 * M_PI / m.m6) / E_star };
+      return {E_star * E_star * m.m2 / 4, m.m6 / (6 * std::sqrt(M_PI) * m.m4),
+              0.375 * std::sqrt(2 * M_PI / m.m6) / E_star};
 
     // The pressure's PSD is (E*^2/4) q^2 C(q), so its profile moments are the
     // heights' radial moments two orders up with the angular factors of their
@@ -91,21 +85,16 @@ namespace penny
     const double scale = E_star * E_star / 4;
     const double m0_p = scale * 2 * m.m2, m2_p = scale * 4 / 3 * m.m4, m4_p = scale * 6 / 5 * m.m6;
     // Nayak: summit density m4/(6 pi sqrt(3) m2), mean summit curvature (8/3) sqrt(m4/pi).
-    return { m0_p, m4_p / (6 * M_PI * std::sqrt(3.) * m2_p), 3 / (8 * std::sqrt(m4_p / M_PI)) };
+    return {m0_p, m4_p / (6 * M_PI * std::sqrt(3.) * m2_p), 3 / (8 * std::sqrt(m4_p / M_PI))};
   }
 
-  double
-  adhesion_ratio(const PressureSummits &summits, const double K_Ic)
+  double adhesion_ratio(const PressureSummits &summits, const double K_Ic)
   {
     return closed_form::psi * adhesion_tension(summits.summit_radius, K_Ic) / std::sqrt(summits.variance);
   }
 
-  double
-  fitted_scaling_exponent(const double       hurst,
-                          const double       zeta_first,
-                          const double       zeta_last,
-                          const unsigned int n_points,
-                          const Convention   convention)
+  double fitted_scaling_exponent(const double hurst, const double zeta_first, const double zeta_last,
+                                 const unsigned int n_points, const Convention convention)
   {
     Eigen::MatrixXd design(n_points, 2);
     Eigen::VectorXd log_ratio(n_points);
@@ -120,8 +109,7 @@ namespace penny
     return design.colPivHouseholderQr().solve(log_ratio)(0);
   }
 
-  double
-  scaling_exponent(const double hurst)
+  double scaling_exponent(const double hurst)
   {
     return 0.4 * (2 * hurst - 1);
   }

@@ -62,8 +62,8 @@ namespace penny
   // log(p0/sqrt(V)) against log(zeta), computed from the moments of the paper's
   // spectrum at `n_points` magnifications spaced evenly in log between
   // zeta_first and zeta_last (q0, h0, E* and K_Ic only shift the intercept).
-  double fitted_scaling_exponent(
-      double hurst, double zeta_first, double zeta_last, unsigned int n_points, Convention convention);
+  double fitted_scaling_exponent(double hurst, double zeta_first, double zeta_last, unsigned int n_points,
+                                 Convention convention);
 
   // The paper's exponent (2/5)(2H - 1).
   double scaling_exponent(double hurst);

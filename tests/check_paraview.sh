@@ -1,0 +1,31 @@
+#!/usr/bin/env bash
+# Usage: check_paraview.sh PENNY SCENE.prm PICTURE_SCRIPT
+# Runs a penny-gap scene that writes fields, draws the standard ParaView
+# pictures with pvpython under Xvfb, and checks that each PNG is written and
+# not blank (many distinct colours, no single colour covering it).
+set -eu
+penny=$1 scene=$2 script=$3
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work"
+"$penny" "$scene" > /dev/null
+timeout 300 xvfb-run -a -s "-screen 0 1280x1024x24" pvpython "$script" fields pictures > pictures.log 2>&1 ||
+  { echo "FAIL: pvpython"; tail -20 pictures.log; exit 1; }
+/usr/bin/python3 - pictures picture-von-mises.png picture-sigma-zz-1e-2.png picture-sigma-zz-1e-6.png \
+  picture-opening.png <<'PY'
+import pathlib
+import sys
+
+import matplotlib.image
+import numpy
+
+folder = pathlib.Path(sys.argv[1])
+for name in sys.argv[2:]:
+    path = folder / name
+    assert path.is_file(), f"{name} was not written"
+    pixels = matplotlib.image.imread(str(path))[:, :, :3].reshape(-1, 3)
+    colours, counts = numpy.unique((pixels * 255).astype(int), axis=0, return_counts=True)
+    assert len(colours) > 100, f"{name}: only {len(colours)} colours"
+    assert counts.max() < 0.9 * len(pixels), f"{name}: one colour covers {counts.max() / len(pixels):.0%}"
+    print(f"ok: {name}, {len(colours)} colours")
+PY
