@@ -16,6 +16,7 @@
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace tt = boost::test_tools;
@@ -58,24 +59,32 @@ namespace
     for (unsigned int e = 0; e <= n; ++e)
       BOOST_TEST(angles[e] == e * M_PI / (2 * n), tt::tolerance(1e-12));
 
-    unsigned int front_edges = 0;
+    // Edges with both ends on the front, by the angle of their midpoint (on a
+    // distributed mesh gathered over the ranks, whose cells share edges).
+    std::vector<double> local;
     for (const auto &cell : triangulation.active_cell_iterators())
-      for (const unsigned int l : cell->line_indices())
-        {
-          const auto line     = cell->line(l);
-          bool       on_front = true;
-          for (const unsigned int v : { 0u, 1u })
-            {
-              const Point<3> &x = line->vertex(v);
-              on_front &= std::abs(x[2]) <= 1e-12 * p.semi_axis_a && ellipse_residual(x, p) <= 1e-12;
-            }
-          if (on_front && !line->user_flag_set())
-            {
-              line->set_user_flag();
-              ++front_edges;
-            }
-        }
-    const_cast<Triangulation<3> &>(triangulation).clear_user_flags();
+      if (cell->is_locally_owned())
+        for (const unsigned int l : cell->line_indices())
+          {
+            const auto line     = cell->line(l);
+            bool       on_front = true;
+            for (const unsigned int v : { 0u, 1u })
+              {
+                const Point<3> &x = line->vertex(v);
+                on_front &= std::abs(x[2]) <= 1e-12 * p.semi_axis_a && ellipse_residual(x, p) <= 1e-12;
+              }
+            if (on_front)
+              local.push_back(
+                  std::atan2(line->center()[1] / p.semi_axis_b, line->center()[0] / p.semi_axis_a));
+          }
+    std::vector<double> midpoints;
+    for (const auto &part : Utilities::MPI::all_gather(triangulation.get_communicator(), local))
+      midpoints.insert(midpoints.end(), part.begin(), part.end());
+    std::sort(midpoints.begin(), midpoints.end());
+    const auto front_edges = std::unique(midpoints.begin(),
+                                         midpoints.end(),
+                                         [](const double x, const double y) { return y - x < 1e-12; }) -
+                             midpoints.begin();
     BOOST_TEST(front_edges == n);
   }
 
