@@ -24,7 +24,15 @@ namespace penny
     // r = 1 + w and beyond it; the radius of the innermost sphere.
     constexpr double inner_shell_aspect = 1.5;
     constexpr double outer_shell_aspect = 3;
-    constexpr double innermost_sphere   = 0.35;
+    // The angular width that sets the shells' thickness and the rows above the
+    // tube: that of the cells along the front, but never below that of 16 of
+    // them, so that a finer front adds cells like m^2, not m^3.
+    double
+    radial_angle(const unsigned int m)
+    {
+      return std::max(M_PI / (4 * m), M_PI / 32);
+    }
+    constexpr double innermost_sphere = 0.35;
 
     // Stretched spherical coordinates (r, theta, phi):
     // x = a r cos(theta) cos(phi), y = b r cos(theta) sin(phi), z = c r sin(theta).
@@ -129,12 +137,12 @@ namespace penny
       explicit ReferenceOctant(const EllipticalGapMeshParameters &p)
           : scale({ p.semi_axis_a, p.semi_axis_b, std::sqrt(p.semi_axis_a * p.semi_axis_b) }),
             m(p.cells_along_front / 2), sectors(p.cells_around_front), tube_rows(sectors / 4),
-            upper_rows(std::max(1L, std::lround(0.3 / (M_PI / (4 * m))))), rows(tube_rows + upper_rows),
+            upper_rows(std::max(1L, std::lround(0.3 / radial_angle(m)))), rows(tube_rows + upper_rows),
             rings(ring_radii(p)), box({ p.domain_width,
                                         p.domain_width * p.semi_axis_a / p.semi_axis_b,
                                         p.domain_height * p.semi_axis_a / scale[2] })
       {
-        const double angle   = M_PI / (4 * m);
+        const double angle   = radial_angle(m);
         const double inner_g = std::exp(inner_shell_aspect * angle);
         const double outer_g = std::exp(outer_shell_aspect * angle);
         const double w       = tube_half_width;

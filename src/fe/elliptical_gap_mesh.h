@@ -10,7 +10,11 @@
 // spherical shells around it (each shell one cell thick, its surface split
 // into the three patches of the cube-sphere: X and Y next to the equator, Z
 // around the pole) and, beyond the shell r = 1.4, shells blended from spheres
-// to the box, so that cell sizes grow like the distance from the crack. The
+// to the box: cells grow like the distance from the crack in every direction,
+// so the far field costs few cells and none is a needle (an extruded mesh
+// would carry the fine front slicing up to z = H). The shells' thickness
+// follows the angular cell width, but stops shrinking past 16 cells along the
+// front, so that a finer front costs cells like m^2. The
 // equator of every shell has 2m = `cells_along_front` edges at parametric
 // angles phi_e = e pi/(4m). In the meridian half-plane (r, theta) of the
 // spherical coordinates the front is the point (1, 0); the block
@@ -20,9 +24,9 @@
 // from `front_cell_size` to the block, and swept along the front. So the
 // front is a line of mesh edges and the grading towards it lies in the coarse
 // mesh itself (p4est allows only about 18 refinement levels in 3D); the coarse
-// mesh is conforming. The swept cells (the X and Y patches inside r = 1.4,
-// spider web included) carry a ChartManifold, the stretched spherical
-// coordinates
+// mesh is conforming. The swept cells (the X and Y patches from the innermost
+// sphere to r = 1.4, spider web included) carry a ChartManifold, the
+// stretched spherical coordinates
 //   x = a r cos(theta) cos(phi), y = b r cos(theta) sin(phi), z = c r sin(theta),
 // so refinement places new front points at r = 1, theta = 0: exactly on the
 // ellipse. All other cells are flat; their interior points are interpolated
