@@ -1,0 +1,546 @@
+#include "fe/elliptical_gap_mesh.h"
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/grid/grid_tools.h>
+#include <deal.II/grid/manifold.h>
+#include <deal.II/grid/tria_description.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+
+namespace penny
+{
+  using namespace dealii;
+
+  namespace
+  {
+    // The block around the front in the reference meridian half-plane:
+    // 1 - w <= r <= 1 + w, 0 <= theta <= w.
+    constexpr double tube_half_width = 0.4;
+    // Radial thickness of a shell over its cells' angular width, inside
+    // r = 1 + w and beyond it; the radius of the innermost sphere.
+    constexpr double inner_shell_aspect = 1.5;
+    constexpr double outer_shell_aspect = 3;
+    // The angular width that sets the shells' thickness and the rows above the
+    // tube: that of the cells along the front, but never below that of 16 of
+    // them, so that a finer front adds cells like m^2, not m^3.
+    double radial_angle(const unsigned int m)
+    {
+      return std::max(M_PI / (4 * m), M_PI / 32);
+    }
+    constexpr double innermost_sphere = 0.35;
+
+    // Stretched spherical coordinates (r, theta, phi):
+    // x = a r cos(theta) cos(phi), y = b r cos(theta) sin(phi), z = c r sin(theta).
+    // The front is r = 1, theta = 0; phi is its parametric angle.
+    class EllipticalFrontChart : public ChartManifold<3>
+    {
+    public:
+      explicit EllipticalFrontChart(const Tensor<1, 3> &scale) : scale(scale) {}
+
+      std::unique_ptr<Manifold<3>> clone() const override
+      {
+        return std::make_unique<EllipticalFrontChart>(scale);
+      }
+
+      Point<3> pull_back(const Point<3> &x) const override
+      {
+        const double X = x[0] / scale[0], Y = x[1] / scale[1], Z = x[2] / scale[2];
+        const double rho = std::hypot(X, Y);
+        return {std::hypot(rho, Z), std::atan2(Z, rho), std::atan2(Y, X)};
+      }
+
+      Point<3> push_forward(const Point<3> &chart) const override
+      {
+        const double r = chart[0], ct = std::cos(chart[1]), st = std::sin(chart[1]);
+        return {scale[0] * r * ct * std::cos(chart[2]), scale[1] * r * ct * std::sin(chart[2]),
+                scale[2] * r * st};
+      }
+
+      DerivativeForm<1, 3, 3> push_forward_gradient(const Point<3> &chart) const override
+      {
+        const double            r = chart[0], ct = std::cos(chart[1]), st = std::sin(chart[1]);
+        const double            cp = std::cos(chart[2]), sp = std::sin(chart[2]);
+        DerivativeForm<1, 3, 3> gradient;
+        gradient[0][0] = scale[0] * ct * cp;
+        gradient[0][1] = -scale[0] * r * st * cp;
+        gradient[0][2] = -scale[0] * r * ct * sp;
+        gradient[1][0] = scale[1] * ct * sp;
+        gradient[1][1] = -scale[1] * r * st * sp;
+        gradient[1][2] = scale[1] * r * ct * cp;
+        gradient[2][0] = scale[2] * st;
+        gradient[2][1] = scale[2] * r * ct;
+        gradient[2][2] = 0;
+        return gradient;
+      }
+
+    private:
+      const Tensor<1, 3> scale;
+    };
+
+    void check(const bool condition, const std::string &message)
+    {
+      if (!condition)
+        throw std::invalid_argument("make_elliptical_gap_mesh: " + message);
+    }
+
+    // Rings around the front: geometric from front_cell_size to the tube
+    // boundary, their number rounded so that they fill it exactly.
+    std::vector<double> ring_radii(const EllipticalGapMeshParameters &p)
+    {
+      check(p.front_cell_size > 0 && p.front_cell_size < tube_half_width / 1.2,
+            "front_cell_size must lie in (0, " + std::to_string(tube_half_width / 1.2) + ")");
+      check(p.ring_ratio > 1, "ring_ratio must exceed 1");
+      const double        span  = tube_half_width / p.front_cell_size;
+      const auto          n     = std::max(1L, std::lround(std::log(span) / std::log(p.ring_ratio)));
+      const double        ratio = std::pow(span, 1. / n);
+      std::vector<double> radii(n + 1);
+      for (long k = 0; k <= n; ++k)
+        radii[k] = k == n ? tube_half_width : p.front_cell_size * std::pow(ratio, k);
+      return radii;
+    }
+
+    // Cos and sin of i pi/n, exact where they are 0 or +-1, so that vertices on
+    // the planes x = 0, y = 0, z = 0 lie on them exactly.
+    std::array<double, 2> cos_sin(const unsigned int i, const unsigned int n)
+    {
+      if (2 * i == n)
+        return {{0, 1}};
+      if (i == 0 || i == n)
+        return {{i == 0 ? 1. : -1., 0}};
+      return {{std::cos(i * M_PI / n), std::sin(i * M_PI / n)}};
+    }
+
+    // The reference octant (front = unit circle) as a cube-sphere: a lattice
+    // of nodes (s, i, j, l), s the shell (0 = the core cube, whose nodes fill
+    // the lattice 0 <= i, j <= m, 0 <= l <= rows), and on each shell the nodes
+    // of the cube surface i = m (X patch), j = m (Y patch), l = rows (Z patch).
+    // The X and Y patches meet the equator in the columns e = 0 ... 2m
+    // (phi_e = e pi/(4m)); their first `tube_rows` rows lie at fixed
+    // latitudes and hold the spider web between shells tube_inner and
+    // tube_outer.
+    class ReferenceOctant
+    {
+    public:
+      explicit ReferenceOctant(const EllipticalGapMeshParameters &p)
+          : scale({p.semi_axis_a, p.semi_axis_b, std::sqrt(p.semi_axis_a * p.semi_axis_b)}),
+            m(p.cells_along_front / 2), sectors(p.cells_around_front), tube_rows(sectors / 4),
+            upper_rows(std::max(1L, std::lround(0.3 / radial_angle(m)))), rows(tube_rows + upper_rows),
+            rings(ring_radii(p)), box({p.domain_width, p.domain_width * p.semi_axis_a / p.semi_axis_b,
+                                       p.domain_height * p.semi_axis_a / scale[2]})
+      {
+        const double angle   = radial_angle(m);
+        const double inner_g = std::exp(inner_shell_aspect * angle);
+        const double outer_g = std::exp(outer_shell_aspect * angle);
+        const double w       = tube_half_width;
+        check(std::min({box[0], box[1], box[2]}) >= 2 * (1 + w),
+              "the box must reach at least 2.8 a along x and y and 2.8 sqrt(a b) along z");
+
+        tube_inner = 1 + std::max(0L, std::lround(std::log((1 - w) / innermost_sphere) / std::log(inner_g)));
+        tube_outer = tube_inner + sectors / 2;
+        radii.resize(tube_outer + 1);
+        for (unsigned int s = 1; s <= tube_inner; ++s)
+          radii[s] = (1 - w) * std::pow(inner_g, static_cast<double>(s) - tube_inner);
+        // Shells through the nodes of the web's top edge, t = w cot(theta_i).
+        for (unsigned int q = 0; q <= sectors / 2; ++q)
+          {
+            const auto [c, s]     = cos_sin(3 * sectors / 4 - q, sectors);
+            radii[tube_inner + q] = 1 + w * c / s;
+          }
+        const double mean_box = std::cbrt(box[0] * box[1] * box[2]);
+        n_shells = tube_outer + std::max(1L, std::lround(std::log(mean_box / (1 + w)) / std::log(outer_g)));
+        core     = radii[1] / (std::sqrt(3.) * inner_g);
+      }
+
+      // Physical position of lattice node (s, i, j, l).
+      Point<3> lattice_point(const unsigned int s, const unsigned int i, const unsigned int j,
+                             const unsigned int l) const
+      {
+        if (s == 0)
+          return physical(core * cube_point(i, j, l));
+        if (s <= tube_outer)
+          return physical(Point<3>(radii[s] * direction(i, j, l)));
+        // Blended shells: per direction a geometric progression of radii from
+        // the last sphere to the box, the direction turning from the sphere's
+        // to the box point's.
+        const Point<3> on_box(box[0] * cube_point(i, j, l)[0], box[1] * cube_point(i, j, l)[1],
+                              box[2] * cube_point(i, j, l)[2]);
+        if (s == n_shells)
+          return physical(on_box);
+        const double       lambda = static_cast<double>(s - tube_outer) / (n_shells - tube_outer);
+        const double       r0     = radii[tube_outer];
+        const Tensor<1, 3> blend =
+            (1 - lambda) * direction(i, j, l) + lambda * Tensor<1, 3>(on_box) / on_box.norm();
+        const double radius = r0 * std::pow(on_box.norm() / r0, lambda);
+        return physical(Point<3>(radius * blend / blend.norm()));
+      }
+
+      // Physical position of the web node (t, zeta) = (r - 1, theta) on column e.
+      Point<3> web_point(const unsigned int e, const Point<2> &node) const
+      {
+        const auto [cp, sp] = cos_sin(e, 4 * m);
+        const double r = 1 + node[0], ct = std::cos(node[1]), st = std::sin(node[1]);
+        return {scale[0] * r * ct * cp, scale[1] * r * ct * sp, scale[2] * r * st};
+      }
+
+      // Lattice indices (i, j) of column e of the X and Y patches.
+      std::array<unsigned int, 2> column(const unsigned int e) const
+      {
+        return e <= m ? std::array<unsigned int, 2>{{m, e}} : std::array<unsigned int, 2>{{2 * m - e, m}};
+      }
+
+      // Web node k (0 ... n-1 rings, n the tube boundary), sector node i, in (t, zeta).
+      Point<2> web_node(const unsigned int k, const unsigned int i) const
+      {
+        const auto [c, s] = cos_sin(i, sectors);
+        if (k + 1 == rings.size())
+          return Point<2>(c, s) * (tube_half_width / std::max(std::abs(c), s));
+        // Odd nodes sit further out, so that the kites have right angles at
+        // their even nodes; every ring is a scaled copy of the kites' outline.
+        const double radius = rings[k] / (i % 2 == 1 ? std::cos(M_PI / sectors) : 1.);
+        return Point<2>(c, s) * radius;
+      }
+
+      const Tensor<1, 3>        scale;
+      const unsigned int        m;
+      const unsigned int        sectors;
+      const unsigned int        tube_rows;
+      const unsigned int        upper_rows;
+      const unsigned int        rows;
+      const std::vector<double> rings;
+      const Tensor<1, 3>        box;
+      unsigned int              tube_inner;
+      unsigned int              tube_outer;
+      unsigned int              n_shells;
+      std::vector<double>       radii;
+      double                    core;
+
+    private:
+      double u(const unsigned int i) const { return i == m ? 1. : std::tan(i * M_PI / (4 * m)); }
+
+      double row_latitude(const unsigned int l) const
+      {
+        return l == tube_rows ? tube_half_width : tube_half_width * std::tan(l * M_PI / sectors);
+      }
+
+      // Height of row l over the cube face at parameter u: the tube rows at
+      // fixed latitudes, the rows above spaced evenly up to the cube's top.
+      double row_height(const double u, const unsigned int l) const
+      {
+        if (l == rows)
+          return 1;
+        const double secant = std::sqrt(1 + u * u);
+        if (l <= tube_rows)
+          return std::tan(row_latitude(l)) * secant;
+        const double top_of_tube = std::tan(tube_half_width) * secant;
+        return top_of_tube + (1 - top_of_tube) * (l - tube_rows) / upper_rows;
+      }
+
+      // Point (i, j, l) of the lattice in the unit cube; on its surface when
+      // i = m, j = m or l = rows.
+      Point<3> cube_point(const unsigned int i, const unsigned int j, const unsigned int l) const
+      {
+        return {u(i), u(j), row_height(u(i) * u(j), l)};
+      }
+
+      // Unit direction of a surface node: on the X and Y patches from its
+      // latitude and longitude, on the Z patch the projected cube point.
+      Tensor<1, 3> direction(const unsigned int i, const unsigned int j, const unsigned int l) const
+      {
+        if (i == m || j == m)
+          {
+            const unsigned int e   = i == m ? j : 2 * m - i;
+            const double       par = u(i == m ? j : i);
+            const double       theta =
+                l <= tube_rows ? row_latitude(l) : std::atan(row_height(par, l) / std::sqrt(1 + par * par));
+            const auto [cp, sp] = cos_sin(e, 4 * m);
+            return Tensor<1, 3>({std::cos(theta) * cp, std::cos(theta) * sp, std::sin(theta)});
+          }
+        const Point<3> p = cube_point(i, j, l);
+        return p / p.norm();
+      }
+
+      Point<3> physical(const Point<3> &reference) const
+      {
+        return {scale[0] * reference[0], scale[1] * reference[1], scale[2] * reference[2]};
+      }
+    };
+
+    // Vertices by key: {0, s, i, j, l} for lattice nodes, {1, e, k, i, 0} for
+    // web nodes (k = 0 the front, k = 1 ... n the rings).
+    class VertexTable
+    {
+    public:
+      template <typename Position>
+      unsigned int operator()(const std::array<unsigned int, 5> &key, const Position &position)
+      {
+        const auto [it, inserted] = index.emplace(key, vertices.size());
+        if (inserted)
+          vertices.push_back(position());
+        return it->second;
+      }
+
+      std::vector<Point<3>> vertices;
+
+    private:
+      std::map<std::array<unsigned int, 5>, unsigned int> index;
+    };
+
+    CellData<3> hexahedron(const std::array<unsigned int, 4> &lower, const std::array<unsigned int, 4> &upper,
+                           const types::manifold_id manifold)
+    {
+      CellData<3> cell;
+      for (unsigned int v = 0; v < 4; ++v)
+        {
+          cell.vertices[v]     = lower[v];
+          cell.vertices[v + 4] = upper[v];
+        }
+      cell.manifold_id = manifold;
+      return cell;
+    }
+  } // namespace
+
+  std::vector<double> front_ring_radii(const EllipticalGapMeshParameters &p)
+  {
+    return ring_radii(p);
+  }
+
+  void make_elliptical_gap_mesh(Triangulation<3> &triangulation, const EllipticalGapMeshParameters &p)
+  {
+    check(p.semi_axis_b > 0 && p.semi_axis_a >= p.semi_axis_b, "the semi-axes must satisfy a >= b > 0");
+    check(p.cells_along_front >= 2 && p.cells_along_front % 2 == 0,
+          "cells_along_front must be even and >= 2");
+    check(p.cells_around_front >= 4 && p.cells_around_front % 4 == 0,
+          "cells_around_front must be a multiple of 4");
+    const ReferenceOctant octant(p);
+    const unsigned int    m = octant.m, rows = octant.rows;
+    const auto            flat  = numbers::flat_manifold_id;
+    const auto            swept = elliptical_front_manifold_id;
+
+    VertexTable              vertex;
+    std::vector<CellData<3>> cells;
+    const auto               lattice = [&](const unsigned int s, const unsigned int i, const unsigned int j,
+                             const unsigned int l) {
+      return vertex({{0, s, i, j, l}}, [&]() { return octant.lattice_point(s, i, j, l); });
+    };
+
+    // Core cube.
+    for (unsigned int l = 0; l < rows; ++l)
+      for (unsigned int j = 0; j < m; ++j)
+        for (unsigned int i = 0; i < m; ++i)
+          cells.push_back(hexahedron({{lattice(0, i, j, l), lattice(0, i + 1, j, l), lattice(0, i, j + 1, l),
+                                       lattice(0, i + 1, j + 1, l)}},
+                                     {{lattice(0, i, j, l + 1), lattice(0, i + 1, j, l + 1),
+                                       lattice(0, i, j + 1, l + 1), lattice(0, i + 1, j + 1, l + 1)}},
+                                     flat));
+
+    // Shells: each surface quad of shell s joined to the same quad of shell
+    // s + 1, except the web's block of the X and Y patches.
+    for (unsigned int s = 0; s < octant.n_shells; ++s)
+      {
+        const bool in_tube   = s >= octant.tube_inner && s < octant.tube_outer;
+        const auto side_type = s >= 1 && s + 1 <= octant.tube_outer ? swept : flat;
+        for (unsigned int e = 0; e < 2 * m; ++e)
+          for (unsigned int l = (in_tube ? octant.tube_rows : 0); l < rows; ++l)
+            {
+              const auto [i0, j0] = octant.column(e);
+              const auto [i1, j1] = octant.column(e + 1);
+              cells.push_back(hexahedron({{lattice(s, i0, j0, l), lattice(s, i1, j1, l),
+                                           lattice(s, i0, j0, l + 1), lattice(s, i1, j1, l + 1)}},
+                                         {{lattice(s + 1, i0, j0, l), lattice(s + 1, i1, j1, l),
+                                           lattice(s + 1, i0, j0, l + 1), lattice(s + 1, i1, j1, l + 1)}},
+                                         side_type));
+            }
+        for (unsigned int j = 0; j < m; ++j)
+          for (unsigned int i = 0; i < m; ++i)
+            cells.push_back(hexahedron({{lattice(s, i, j, rows), lattice(s, i + 1, j, rows),
+                                         lattice(s, i, j + 1, rows), lattice(s, i + 1, j + 1, rows)}},
+                                       {{lattice(s + 1, i, j, rows), lattice(s + 1, i + 1, j, rows),
+                                         lattice(s + 1, i, j + 1, rows), lattice(s + 1, i + 1, j + 1, rows)}},
+                                       flat));
+      }
+
+    // Spider web around the front, swept along it: its outline is the block
+    // boundary, whose nodes are lattice nodes.
+    const unsigned int n_rings = octant.rings.size() - 1, n_s = octant.sectors;
+    const auto         web = [&](const unsigned int e, const int k, const unsigned int i) {
+      if (k < 0)
+        return vertex({{1, e, 0, 0, 0}}, [&]() { return octant.web_point(e, Point<2>()); });
+      if (static_cast<unsigned int>(k) < n_rings)
+        return vertex({{1, e, static_cast<unsigned int>(k) + 1, i, 0}},
+                              [&]() { return octant.web_point(e, octant.web_node(k, i)); });
+      const auto [ci, cj] = octant.column(e);
+      if (4 * i <= n_s)
+        return lattice(octant.tube_outer, ci, cj, i);
+      if (4 * i <= 3 * n_s)
+        return lattice(octant.tube_inner + 3 * n_s / 4 - i, ci, cj, octant.tube_rows);
+      return lattice(octant.tube_inner, ci, cj, n_s - i);
+    };
+    for (unsigned int e = 0; e < 2 * m; ++e)
+      {
+        const auto quad = [&](const unsigned int                                 slice,
+                              const std::array<std::pair<int, unsigned int>, 4> &nodes) {
+          std::array<unsigned int, 4> ids;
+          for (unsigned int v = 0; v < 4; ++v)
+            ids[v] = web(slice, nodes[v].first, nodes[v].second);
+          return ids;
+        };
+        // Kites: the front, two ring nodes and the odd node between them.
+        for (unsigned int i = 0; i < n_s; i += 2)
+          {
+            const std::array<std::pair<int, unsigned int>, 4> kite = {
+                {{-1, 0}, {0, i}, {0, i + 2}, {0, i + 1}}};
+            cells.push_back(hexahedron(quad(e, kite), quad(e + 1, kite), swept));
+          }
+        for (unsigned int k = 0; k < n_rings; ++k)
+          for (unsigned int i = 0; i < n_s; ++i)
+            {
+              const int                                         in = k, out = k + 1;
+              const std::array<std::pair<int, unsigned int>, 4> ring = {
+                  {{in, i}, {out, i}, {in, i + 1}, {out, i + 1}}};
+              cells.push_back(hexahedron(quad(e, ring), quad(e + 1, ring), swept));
+            }
+      }
+
+    GridTools::invert_cells_with_negative_measure(vertex.vertices, cells);
+    GridTools::consistently_order_cells(cells);
+
+    Triangulation<3> coarse;
+    coarse.create_triangulation(vertex.vertices, cells, SubCellData());
+    for (const auto &cell : coarse.active_cell_iterators())
+      if (cell->manifold_id() == swept)
+        cell->set_all_manifold_ids(swept);
+    coarse.set_manifold(swept, EllipticalFrontChart(octant.scale));
+
+    const double a = p.semi_axis_a, b = p.semi_axis_b, tolerance = 1e-10 * a;
+    for (const auto &face : coarse.active_face_iterators())
+      if (face->at_boundary())
+        {
+          const Point<3> x = face->center();
+          if (std::abs(x[2]) < tolerance)
+            {
+              // Inside the ellipse when all vertices are: the centre of a thin
+              // face outside it may lie inside, on the chord of the front.
+              bool inside = true;
+              for (const unsigned int v : face->vertex_indices())
+                {
+                  const Point<3> &y = face->vertex(v);
+                  inside &= (y[0] / a) * (y[0] / a) + (y[1] / b) * (y[1] / b) < 1 + 1e-12;
+                }
+              face->set_boundary_id(inside ? elliptical_boundary_id::gap_face
+                                           : elliptical_boundary_id::ligament);
+            }
+          else if (std::abs(x[0]) < tolerance)
+            face->set_boundary_id(elliptical_boundary_id::symmetry_x);
+          else if (std::abs(x[1]) < tolerance)
+            face->set_boundary_id(elliptical_boundary_id::symmetry_y);
+          else
+            face->set_boundary_id(elliptical_boundary_id::far);
+        }
+    triangulation.copy_triangulation(coarse);
+  }
+
+  EllipticalFront::EllipticalFront(const double semi_axis_a, const double semi_axis_b)
+      : a(semi_axis_a), b(semi_axis_b)
+  {
+  }
+
+  Point<3> EllipticalFront::point(const double phi) const
+  {
+    return {a * std::cos(phi), b * std::sin(phi), 0};
+  }
+
+  Tensor<1, 3> EllipticalFront::unit_tangent(const double phi) const
+  {
+    const Tensor<1, 3> t({-a * std::sin(phi), b * std::cos(phi), 0});
+    return t / t.norm();
+  }
+
+  Tensor<1, 3> EllipticalFront::unit_normal(const double phi) const
+  {
+    const Tensor<1, 3> n({b * std::cos(phi), a * std::sin(phi), 0});
+    return n / n.norm();
+  }
+
+  // The nearest point of the ellipse to (x, y), by Eberly's robust bisection
+  // ("Distance from a point to an ellipse", 2013): with z_i = y_i/e_i it is
+  // x_i = e_i^2 y_i/(s + e_i^2) for the root s of
+  // sum (e_i y_i/(s + e_i^2))^2 = 1, bracketed and bisected to machine
+  // precision. The nearest point to x in 3D has the same (x, y).
+  EllipticalFront::Coordinates EllipticalFront::local_coordinates(const Point<3> &x) const
+  {
+    const double y0 = std::abs(x[0]), y1 = std::abs(x[1]);
+    double       x0, x1;
+    if (y1 > 0 && y0 > 0)
+      {
+        const double z0 = y0 / a, z1 = y1 / b, g = z0 * z0 + z1 * z1 - 1;
+        if (g == 0)
+          x0 = y0, x1 = y1;
+        else
+          {
+            // s in units of b^2: root of (r0 z0/(s + r0))^2 + (z1/(s + 1))^2 = 1.
+            const double r0 = (a / b) * (a / b), n0 = r0 * z0;
+            double       s0 = z1 - 1, s1 = g < 0 ? 0 : std::hypot(n0, z1) - 1, s = 0;
+            for (unsigned int iteration = 0; iteration < 2000; ++iteration)
+              {
+                s = (s0 + s1) / 2;
+                if (s == s0 || s == s1)
+                  break;
+                const double f0 = n0 / (s + r0), f1 = z1 / (s + 1), h = f0 * f0 + f1 * f1 - 1;
+                if (h > 0)
+                  s0 = s;
+                else if (h < 0)
+                  s1 = s;
+                else
+                  break;
+              }
+            x0 = r0 * y0 / (s + r0);
+            x1 = y1 / (s + 1);
+          }
+      }
+    else if (y1 > 0)
+      x0 = 0, x1 = b;
+    else if (a * y0 < a * a - b * b)
+      {
+        // On the major axis inside the evolute: two nearest points, take y >= 0.
+        const double ratio = a * y0 / (a * a - b * b);
+        x0 = a * ratio, x1 = b * std::sqrt(1 - ratio * ratio);
+      }
+    else
+      x0 = a, x1 = 0;
+
+    const double in_plane = std::hypot(y0 - x0, y1 - x1);
+    const bool   outside  = (y0 / a) * (y0 / a) + (y1 / b) * (y1 / b) > 1;
+    const double advance  = outside ? in_plane : -in_plane;
+    return {std::atan2(std::copysign(x1, x[1]) / b, std::copysign(x0, x[0]) / a), std::hypot(advance, x[2]),
+            std::atan2(x[2], advance)};
+  }
+
+  std::vector<double> front_vertex_angles(const Triangulation<3>            &triangulation,
+                                          const EllipticalGapMeshParameters &p)
+  {
+    const double        a = p.semi_axis_a, b = p.semi_axis_b;
+    std::vector<double> local;
+    for (const auto &cell : triangulation.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          {
+            const Point<3> &x = cell->vertex(v);
+            if (std::abs(x[2]) < 1e-12 * a &&
+                std::abs((x[0] / a) * (x[0] / a) + (x[1] / b) * (x[1] / b) - 1) < 1e-10)
+              local.push_back(std::atan2(x[1] / b, x[0] / a));
+          }
+    std::vector<double> angles;
+    for (const auto &part : Utilities::MPI::all_gather(triangulation.get_communicator(), local))
+      angles.insert(angles.end(), part.begin(), part.end());
+    std::sort(angles.begin(), angles.end());
+    // A vertex is shared by several cells (and ranks): keep one of each.
+    angles.erase(std::unique(angles.begin(), angles.end(),
+                             [](const double x, const double y) { return y - x < 1e-12; }),
+                 angles.end());
+    return angles;
+  }
+} // namespace penny

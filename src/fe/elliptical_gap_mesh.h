@@ -1,0 +1,125 @@
+// Mesh of the quarter x, y, z >= 0 of a box [0, R]^2 x [0, H] around a flat
+// elliptical gap x^2/a^2 + y^2/b^2 < 1 on z = 0 (a >= b), graded towards the
+// crack front, for 3D elasticity on a serial or a p4est-distributed
+// triangulation.
+//
+// Construction. The mesh is built in a reference space (X, Y, Z) in which the
+// front is the unit circle X^2 + Y^2 = 1, Z = 0, and mapped to the physical
+// space by x = a X, y = b Y, z = c Z with c = sqrt(a b). In the reference
+// space it is a cube-sphere octant: a core cube [0, c0]^3 of m x m x m' cells,
+// spherical shells around it (each shell one cell thick, its surface split
+// into the three patches of the cube-sphere: X and Y next to the equator, Z
+// around the pole) and, beyond the shell r = 1.4, shells blended from spheres
+// to the box: cells grow like the distance from the crack in every direction,
+// so the far field costs few cells and none is a needle (an extruded mesh
+// would carry the fine front slicing up to z = H). The shells' thickness
+// follows the angular cell width, but stops shrinking past 16 cells along the
+// front, so that a finer front costs cells like m^2. The
+// equator of every shell has 2m = `cells_along_front` edges at parametric
+// angles phi_e = e pi/(4m). In the meridian half-plane (r, theta) of the
+// spherical coordinates the front is the point (1, 0); the block
+// 0.6 <= r <= 1.4, 0 <= theta <= 0.4 of the X and Y patches is replaced by a
+// conforming spider web around that point: `cells_around_front` sectors (kite
+// cells at the front, each spanning two sectors), rings growing geometrically
+// from `front_cell_size` to the block, and swept along the front. So the
+// front is a line of mesh edges and the grading towards it lies in the coarse
+// mesh itself (p4est allows only about 18 refinement levels in 3D); the coarse
+// mesh is conforming. The swept cells (the X and Y patches from the innermost
+// sphere to r = 1.4, spider web included) carry a ChartManifold, the
+// stretched spherical coordinates
+//   x = a r cos(theta) cos(phi), y = b r cos(theta) sin(phi), z = c r sin(theta),
+// so refinement places new front points at r = 1, theta = 0: exactly on the
+// ellipse. All other cells are flat; their interior points are interpolated
+// from their curved faces by deal.II, so refined cells stay well shaped.
+// In the physical meridian plane the innermost ring has radius b
+// `front_cell_size` across the front at phi = pi/2 (a `front_cell_size` at
+// phi = 0) and c `front_cell_size` in z.
+//
+// Angles: the front point at parametric angle phi is (a cos phi, b sin phi, 0).
+#pragma once
+
+#include <deal.II/base/point.h>
+#include <deal.II/base/tensor.h>
+#include <deal.II/base/types.h>
+#include <deal.II/grid/tria.h>
+
+#include <vector>
+
+namespace penny
+{
+  struct EllipticalGapMeshParameters
+  {
+    double semi_axis_a   = 1;               // a (m), along x; a >= b
+    double semi_axis_b   = 0.5;             // b (m), along y
+    double domain_width  = 40;              // R/a: the box reaches x = R and y = R
+    double domain_height = 40;              // H/a: the box reaches z = H (a free far boundary raised
+                                            // K_I of the circle by 1.2e-4 more at 20 than at 40)
+    unsigned int cells_along_front  = 16;   // edges along the quarter front (even)
+    unsigned int cells_around_front = 8;    // sectors of the half-plane around the front (multiple of 4)
+    double       front_cell_size    = 1e-3; // radius of the innermost ring, in units of b
+    double       ring_ratio         = 1.6;  // nominal ratio of successive ring radii (the rings fill
+                                            // the tube exactly, so the ratio used is close to it)
+  };
+
+  namespace elliptical_boundary_id
+  {
+    constexpr dealii::types::boundary_id symmetry_x = 1; // x = 0: u_x = 0
+    constexpr dealii::types::boundary_id gap_face   = 2; // z = 0 inside the ellipse: loaded
+    constexpr dealii::types::boundary_id ligament   = 3; // z = 0 outside: u_z = 0
+    constexpr dealii::types::boundary_id far        = 4; // x = R, y = R, z = H
+    constexpr dealii::types::boundary_id symmetry_y = 5; // y = 0: u_y = 0
+  }                                                      // namespace elliptical_boundary_id
+
+  // Manifold id of the cells swept along the front (the chart above).
+  constexpr dealii::types::manifold_id elliptical_front_manifold_id = 1;
+
+  // Builds the coarse mesh into an empty `triangulation` (serial or
+  // parallel::distributed: every rank builds the same coarse mesh), with the
+  // boundary ids above and the front manifold attached. Throws
+  // std::invalid_argument for parameters out of range.
+  void make_elliptical_gap_mesh(dealii::Triangulation<3>          &triangulation,
+                                const EllipticalGapMeshParameters &p);
+
+  // Radii of the rings around the front in the reference meridian plane, from
+  // the innermost (front_cell_size) to the tube boundary (0.4); physical
+  // distances are these times b to a across the front, times c in z.
+  std::vector<double> front_ring_radii(const EllipticalGapMeshParameters &p);
+
+  // The front x^2/a^2 + y^2/b^2 = 1, z = 0, and coordinates local to it.
+  class EllipticalFront
+  {
+  public:
+    EllipticalFront(double semi_axis_a, double semi_axis_b);
+
+    // Point at parametric angle phi: (a cos phi, b sin phi, 0).
+    dealii::Point<3> point(double phi) const;
+    // Unit tangent in the direction of increasing phi.
+    dealii::Tensor<1, 3> unit_tangent(double phi) const;
+    // Unit normal in the plane z = 0, pointing away from the gap (the
+    // direction of crack advance).
+    dealii::Tensor<1, 3> unit_normal(double phi) const;
+
+    // Coordinates of x relative to its nearest front point: that point's
+    // parametric angle phi, the distance from it (x lies in the plane normal to
+    // the front there), and the angle theta in that plane from the crack
+    // advance direction, 0 ahead of the front (ligament), pi behind it (gap
+    // face), pi/2 straight above.
+    struct Coordinates
+    {
+      double phi;
+      double distance;
+      double theta;
+    };
+    Coordinates local_coordinates(const dealii::Point<3> &x) const;
+
+  private:
+    const double a;
+    const double b;
+  };
+
+  // Parametric angles of the front vertices of the active mesh, sorted, from 0
+  // to pi/2; on a parallel::distributed::Triangulation those of all ranks.
+  // Consecutive angles bound the front edges.
+  std::vector<double> front_vertex_angles(const dealii::Triangulation<3>    &triangulation,
+                                          const EllipticalGapMeshParameters &p);
+} // namespace penny
