@@ -261,7 +261,7 @@ BOOST_AUTO_TEST_CASE(fe_gap_function_aggregation)
   parameters.fe_gap_area->n_tabulated_tensions = 8;
   parameters.area_load->n_points               = 4;
   const ScratchFolder scratch;
-  ResultFolder        results(scratch.path / "fe-gap-area", "");
+  ResultFolder        results(scratch.path / "fe-gap-area", {});
   std::ostringstream  log;
   BOOST_TEST(run_fe_gap_area_scene(parameters, results, log) < 1e-4);
   results.commit();

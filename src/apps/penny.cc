@@ -4,9 +4,14 @@
 
 #include <deal.II/base/mpi.h>
 
+#include <chrono>
+#include <exception>
+#include <fcntl.h>
 #include <iomanip>
 #include <iostream>
 #include <string>
+#include <thread>
+#include <unistd.h>
 
 namespace
 {
@@ -26,57 +31,121 @@ namespace
     for (const auto &scene : penny::scene_registry())
       out << "  " << std::left << std::setw(width + 2) << scene.name << scene.description << '\n';
   }
+
+  // A message for the user, on one line.
+  std::string error_message(const std::exception_ptr &error, const std::string &parameter_file)
+  {
+    try
+      {
+        std::rethrow_exception(error);
+      }
+    catch (const penny::InputError &input_error)
+      {
+        return penny::one_line(parameter_file + ": " + input_error.what());
+      }
+    catch (const dealii::ExceptionBase &exception)
+      {
+        return penny::one_line(exception);
+      }
+    catch (const std::bad_alloc &)
+      {
+        return "out of memory: the run needs more memory than it can get (fewer Mesh/Tip refinement levels, "
+               "Global refinements or a lower Finite element/Polynomial degree need less)";
+      }
+    catch (const std::exception &exception)
+      {
+        return penny::one_line(exception.what());
+      }
+    catch (...)
+      {
+        return "unknown failure";
+      }
+  }
+
+  // Ends a run that failed, with exit status 1. An error on some ranks only
+  // would leave the others waiting in a collective operation: each failing
+  // rank waits a few seconds, in a non-blocking barrier on its own
+  // communicator, for all ranks to fail too; then rank 0 reports. If they do
+  // not, the rank reports itself and ends the whole run.
+  int fail(MPI_Comm errors, const std::string &message)
+  {
+    MPI_Request request;
+    MPI_Ibarrier(errors, &request);
+    const auto deadline   = std::chrono::steady_clock::now() + std::chrono::seconds(5);
+    int        all_failed = 0;
+    while (!all_failed && std::chrono::steady_clock::now() < deadline)
+      {
+        MPI_Test(&request, &all_failed, MPI_STATUS_IGNORE);
+        if (!all_failed)
+          std::this_thread::sleep_for(std::chrono::milliseconds(1));
+      }
+    const unsigned int rank = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
+    if (all_failed)
+      {
+        if (rank == 0)
+          std::cerr << "penny: error: " << message << std::endl;
+        return 1;
+      }
+    std::cerr << "penny: error on MPI rank " << rank << " alone: " << message << std::endl;
+    MPI_Abort(MPI_COMM_WORLD, 1);
+    return 1;
+  }
 } // namespace
 
 int main(int argc, char **argv)
 {
+  // Descriptors 0-2 left closed by the caller would be taken by the first
+  // files MPI or penny open, and the screen output would land in them.
+  const bool stdout_closed = fcntl(STDOUT_FILENO, F_GETFD) == -1;
+  for (const int descriptor : {STDIN_FILENO, STDOUT_FILENO, STDERR_FILENO})
+    if (fcntl(descriptor, F_GETFD) == -1)
+      open("/dev/null", descriptor == STDIN_FILENO ? O_RDONLY : O_WRONLY);
+
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
-  const std::string                        argument = argc >= 2 ? argv[1] : "";
+  MPI_Comm                                 errors;
+  MPI_Comm_dup(MPI_COMM_WORLD, &errors);
+  const std::string argument = argc >= 2 ? argv[1] : "";
   // Under mpirun every rank computes; rank 0 speaks.
   const bool    speaks = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   std::ostream  silent(nullptr);
   std::ostream &log = speaks ? std::cout : silent;
   try
     {
+      if (stdout_closed)
+        throw std::runtime_error("standard output is closed; penny prints its results there");
       if ((argument == "--help" || argument == "-h") && argc == 2)
-        {
-          print_usage(log);
-          return 0;
-        }
-      if (argument == "--print-parameters" && argc <= 3)
+        print_usage(log);
+      else if (argument == "--print-parameters" && argc <= 3)
         {
           dealii::ParameterHandler prm;
           penny::declare_scene(prm, argc == 3 ? penny::find_scene(argv[2]) : penny::scene_registry().front());
           prm.print_parameters(log, dealii::ParameterHandler::PRM);
-          return 0;
         }
-      if (argc != 2 || argument.empty() || argument[0] == '-')
+      else if (argc != 2 || argument.empty() || argument[0] == '-')
         {
           if (speaks)
             std::cerr << "penny: error: expected one parameter file (try 'penny --help')" << std::endl;
           return 2;
         }
-      const penny::Verdict verdict = penny::run_scene_file(argument, log);
-      if (!verdict.passed)
+      else
         {
-          if (speaks)
-            std::cerr << "penny: FAIL: " << verdict.message << std::endl;
-          return 1;
+          const penny::Verdict verdict = penny::run_scene_file(argument, log);
+          if (!verdict.passed)
+            {
+              if (speaks)
+                std::cerr << "penny: FAIL: " << penny::one_line(verdict.message) << std::endl;
+              return 1;
+            }
+          if (!verdict.message.empty())
+            log << "PASS: " << verdict.message << std::endl;
         }
-      if (!verdict.message.empty())
-        log << "PASS: " << verdict.message << std::endl;
+      // What penny printed must have arrived: a full disk or a closed pipe is an error.
+      if (speaks && !(std::cout << std::flush))
+        throw std::runtime_error("could not write to standard output");
     }
-  catch (const penny::InputError &error)
+  catch (...)
     {
-      if (speaks)
-        std::cerr << "penny: error: " << argument << ": " << error.what() << std::endl;
-      return 1;
-    }
-  catch (const std::exception &error)
-    {
-      if (speaks)
-        std::cerr << "penny: error: " << error.what() << std::endl;
-      return 1;
+      return fail(errors, error_message(std::current_exception(), argument));
     }
   return 0;
 }

@@ -1,6 +1,7 @@
 #include "fe/linear_elastic_system.h"
 
 #include "fe/boundary_faces.h"
+#include "input/input_error.h"
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
@@ -14,6 +15,7 @@
 #include <deal.II/numerics/vector_tools.h>
 
 #include <cmath>
+#include <regex>
 #include <sstream>
 
 namespace penny
@@ -120,9 +122,51 @@ namespace penny
     stiffness.compress(VectorOperation::add);
   }
 
+  namespace
+  {
+    // A solver's failure in one line: deal.II's report spans many, and
+    // Amesos prints MUMPS' error code (INFOG(1)) to std::cerr.
+    std::string solver_failure(const std::string &solver, const std::string &deal_ii_report,
+                               const std::string &amesos_report)
+    {
+      std::smatch code;
+      if (std::regex_search(amesos_report, code, std::regex("INFOG\\(1\\) = (-?[0-9]+)")))
+        {
+          const int infog = std::stoi(code[1]);
+          return solver + " failed with INFOG(1) = " + code[1].str() +
+                 (infog == -10 ? ": the stiffness matrix is singular"
+                  : infog == -7 || infog == -8 || infog == -9 || infog == -13 ? ": out of memory"
+                                                                              : "");
+        }
+      return solver + " failed: " + deal_ii_report;
+    }
+  } // namespace
+
+  // The solvers' own failures (a singular matrix, memory) as one line naming
+  // the solver. A singular matrix means a mesh or boundary conditions that
+  // leave the solid free to move.
   template <typename Kinematics> void LinearElasticSystem<Kinematics>::factorise()
   {
     TimerOutput::Scope scope(timer, "solve");
+    const CapturedCerr amesos_report;
+    try
+      {
+        build_solver();
+      }
+    catch (const SparseDirectUMFPACK::ExcUMFPACKError &)
+      {
+        throw std::runtime_error("solve: UMFPACK could not factorise the stiffness matrix: it is singular or "
+                                 "too large for the memory");
+      }
+    catch (const ExceptionBase &exception)
+      {
+        throw std::runtime_error("solve: " +
+                                 solver_failure(solver_name(), one_line(exception), amesos_report.text()));
+      }
+  }
+
+  template <typename Kinematics> void LinearElasticSystem<Kinematics>::build_solver()
+  {
     if (linear_solver.type == LinearSolverParameters::Type::direct)
       {
         if (Utilities::MPI::n_mpi_processes(get_communicator()) == 1)
@@ -185,13 +229,25 @@ namespace penny
           }
         report.iterations = control.last_step();
       }
-    else if (mumps)
-      mumps->solve(x, b);
     else
       {
-        Vector<double> serial(b);
-        umfpack.solve(serial);
-        x = serial;
+        const CapturedCerr amesos_report;
+        try
+          {
+            if (mumps)
+              mumps->solve(x, b);
+            else
+              {
+                Vector<double> serial(b);
+                umfpack.solve(serial);
+                x = serial;
+              }
+          }
+        catch (const ExceptionBase &exception)
+          {
+            throw std::runtime_error(
+                "solve: " + solver_failure(solver_name(), one_line(exception), amesos_report.text()));
+          }
       }
   }
 
@@ -223,7 +279,7 @@ namespace penny
                            });
     rhs.compress(VectorOperation::add);
     if (!std::isfinite(rhs.l2_norm()))
-      throw std::runtime_error("assembly: the load vector holds NaN or Inf (check Load/Expression)");
+      throw std::runtime_error("assembly: the load vector holds NaN or Inf");
     return rhs;
   }
 
@@ -241,7 +297,19 @@ namespace penny
     TrilinosWrappers::MPI::Vector u(owned, get_communicator());
     report.iterations         = 0;
     report.condition_estimate = 0;
-    apply_inverse(u, rhs);
+    const double load_norm    = rhs.l2_norm();
+    if (load_norm == 0)
+      throw std::runtime_error("assembly: the load vector is zero: the load vanishes at every quadrature "
+                               "point of the loaded faces");
+    try
+      {
+        apply_inverse(u, rhs);
+      }
+    catch (const ExceptionBase &exception)
+      {
+        throw std::runtime_error("solve: " + solver_name() +
+                                 " failed (Linear solver/Type): " + one_line(exception));
+      }
 
     // The graded mesh makes the matrix ill-conditioned (cell widths span many
     // orders of magnitude); a few steps of iterative refinement with the same
@@ -250,14 +318,22 @@ namespace penny
     const auto                    relative_residual = [&]() {
       stiffness.vmult(residual, u);
       residual.sadd(-1., 1., rhs);
-      return residual.l2_norm() / rhs.l2_norm();
+      return residual.l2_norm() / load_norm;
     };
     report.relative_residual = relative_residual();
     for (unsigned int step = 0; step < 3 && report.relative_residual > 1e-3 * linear_solver.tolerance &&
                                 linear_solver.type == LinearSolverParameters::Type::direct;
          ++step)
       {
-        apply_inverse(correction, residual);
+        try
+          {
+            apply_inverse(correction, residual);
+          }
+        catch (const ExceptionBase &exception)
+          {
+            throw std::runtime_error("solve: " + solver_name() +
+                                     " failed (Linear solver/Type): " + one_line(exception));
+          }
         u += correction;
         report.relative_residual = relative_residual();
       }

@@ -82,6 +82,9 @@ namespace penny
     const dealii::Triangulation<dim> &get_triangulation() const { return dof_handler.get_triangulation(); }
     MPI_Comm get_communicator() const { return get_triangulation().get_communicator(); }
 
+    // Entries of the stiffness matrix, all ranks together.
+    std::size_t n_matrix_entries() const { return stiffness.n_nonzero_elements(); }
+
     // "UMFPACK" (one MPI rank), "MUMPS" (several) or "CG + AMG".
     std::string solver_name() const;
 
@@ -89,6 +92,7 @@ namespace penny
     void distribute_and_constrain();
     void assemble_matrix();
     void factorise();
+    void build_solver();
     // x = A^-1 b with the factorisation or the preconditioned CG.
     void apply_inverse(dealii::TrilinosWrappers::MPI::Vector       &x,
                        const dealii::TrilinosWrappers::MPI::Vector &b);

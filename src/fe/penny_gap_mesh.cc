@@ -1,6 +1,8 @@
 #include "fe/penny_gap_mesh.h"
 
 #include "fe/boundary_ids.h"
+#include "fe/problem_size.h"
+#include "input/collective.h"
 #include "input/input_error.h"
 
 #include <deal.II/grid/grid_generator.h>
@@ -10,11 +12,21 @@
 #include <gmsh.h>
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
+#include <csignal>
+#include <cstdlib>
+#include <cstring>
+#include <fcntl.h>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
+#include <map>
 #include <set>
 #include <sstream>
+#include <sys/prctl.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
 #include <unistd.h>
 
 namespace penny
@@ -27,15 +39,10 @@ namespace penny
     double distance_to_cell(const Point<2> &p, const Triangulation<2>::active_cell_iterator &cell)
     {
       const BoundingBox<2> box = cell->bounding_box();
-      double               d2  = 0;
+      double               gap[2];
       for (unsigned int i = 0; i < 2; ++i)
-        {
-          const double below = box.lower_bound(i) - p[i];
-          const double above = p[i] - box.upper_bound(i);
-          const double gap   = std::max({below, above, 0.});
-          d2 += gap * gap;
-        }
-      return std::sqrt(d2);
+        gap[i] = std::max({box.lower_bound(i) - p[i], p[i] - box.upper_bound(i), 0.});
+      return std::hypot(gap[0], gap[1]); // without overflow at any scale
     }
 
     // Steps of width `s` filling [0, length >= 2 s]; the remainder widens the
@@ -120,12 +127,23 @@ namespace penny
             triangulation);
     }
 
-    // Meshes a .geo with gmsh, passing c, R and H as parser numbers (the .geo
-    // declares them with DefineConstant), and returns the path of the .msh.
-    std::string mesh_geo_file(const std::string &geo_file, const GeometryParameters &geometry)
+    // What a child process running gmsh reports by its exit status.
+    enum GmshStatus
     {
-      const std::string msh_file =
-          (std::filesystem::temp_directory_path() / ("penny-" + std::to_string(getpid()) + ".msh")).string();
+      meshed        = 0,
+      failed        = 1,
+      out_of_memory = 2,
+      exited_early  = 3, // the .geo ended gmsh (Exit;) before penny wrote the mesh
+    };
+
+    // In a child process (which never returns): meshes the .geo with gmsh,
+    // passing c, R and H as parser numbers (the .geo declares them with
+    // DefineConstant), and writes the mesh to `msh_file`.
+    [[noreturn]] void run_gmsh(const std::string &geo_file, const std::string &msh_file,
+                               const GeometryParameters &geometry)
+    {
+      // An exit() inside gmsh runs this first, before the parent's destructors.
+      std::atexit([]() { _exit(exited_early); });
       // gmsh 4.8 has no parser API: the numbers go in as command-line options.
       std::vector<std::string> arguments = {"gmsh"};
       for (const auto &[name, value] : {std::pair<std::string, double>{"c", geometry.gap_radius},
@@ -140,45 +158,145 @@ namespace penny
       std::vector<char *> argv;
       for (auto &argument : arguments)
         argv.push_back(argument.data());
-      gmsh::initialize(argv.size(), argv.data(), false);
       try
         {
+          gmsh::initialize(argv.size(), argv.data(), false);
           gmsh::option::setNumber("General.Verbosity", 1);
           gmsh::option::setNumber("Mesh.MshFileVersion", 2.2);
           gmsh::open(geo_file);
           gmsh::model::mesh::generate(2);
           gmsh::write(msh_file);
+          gmsh::finalize();
+        }
+      catch (const std::bad_alloc &)
+        {
+          _exit(out_of_memory);
         }
       catch (...)
         {
-          gmsh::finalize();
-          throw InputError("Mesh/Mesh file = '" + geo_file + "' could not be meshed by gmsh");
+          _exit(failed);
         }
-      gmsh::finalize();
-      return msh_file;
+      _exit(meshed);
+    }
+
+    // The last of gmsh's error messages ("Error   : ..."), if any.
+    std::string gmsh_error(const std::string &log)
+    {
+      std::istringstream lines(log);
+      std::string        line, error;
+      while (std::getline(lines, line))
+        if (line.rfind("Error", 0) == 0)
+          error = line;
+      return one_line(error);
+    }
+
+    // The .msh text of a .geo meshed by gmsh in a child process, so that a
+    // .geo that ends in Exit, a crash of gmsh, or gmsh running out of memory
+    // (its address space is bounded by what the run may use) ends the child,
+    // not penny. Rank 0 meshes; every rank reads the same text.
+    std::string mesh_geo_file(const std::string &geo_file, const GeometryParameters &geometry)
+    {
+      std::string msh;
+      run_on_rank_zero([&]() {
+        const std::string entry  = "Mesh/Mesh file = " + in_quotes(geo_file);
+        std::string       folder = (std::filesystem::temp_directory_path() / "penny-gmsh-XXXXXX").string();
+        if (!mkdtemp(folder.data()))
+          throw std::runtime_error("mesh: could not create a temporary folder for gmsh: " +
+                                   std::string(std::strerror(errno)));
+        const std::filesystem::path msh_file = std::filesystem::path(folder) / "mesh.msh";
+        const std::filesystem::path log_file = std::filesystem::path(folder) / "gmsh.log";
+        // The child's address space: what it inherits, and what the run may use.
+        const double limit = mapped_memory() + memory_share * available_memory();
+        std::cout.flush();
+        const pid_t parent = getpid();
+        const pid_t child  = fork();
+        if (child < 0)
+          throw std::runtime_error("mesh: could not start gmsh: " + std::string(std::strerror(errno)));
+        if (child == 0)
+          {
+            // The child dies with penny.
+            prctl(PR_SET_PDEATHSIG, SIGKILL);
+            if (getppid() != parent)
+              _exit(failed);
+            const int log = open(log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
+            dup2(log, STDOUT_FILENO);
+            dup2(log, STDERR_FILENO);
+            rlimit address_space;
+            getrlimit(RLIMIT_AS, &address_space);
+            address_space.rlim_cur = std::min(static_cast<double>(address_space.rlim_max), limit);
+            setrlimit(RLIMIT_AS, &address_space);
+            run_gmsh(geo_file, msh_file.string(), geometry);
+          }
+        int status = 0;
+        while (waitpid(child, &status, 0) < 0 && errno == EINTR)
+          ;
+        std::ifstream      in(msh_file);
+        std::ostringstream text;
+        text << in.rdbuf();
+        msh = text.str();
+        std::ifstream      log_stream(log_file);
+        std::ostringstream log;
+        log << log_stream.rdbuf();
+        const std::string error = gmsh_error(log.str());
+        std::error_code   ignored;
+        std::filesystem::remove_all(folder, ignored);
+
+        // An exception escaping gmsh's own threads ends it with SIGABRT.
+        if ((WIFEXITED(status) && WEXITSTATUS(status) == out_of_memory) ||
+            log.str().find("std::bad_alloc") != std::string::npos)
+          throw InputError(entry + ": gmsh ran out of memory (its limit: " +
+                           std::to_string(static_cast<long long>(limit / (1 << 20))) +
+                           " MiB of address space); a coarser mesh needs less");
+        if (WIFSIGNALED(status))
+          throw InputError(entry + ": gmsh was killed by signal " + std::to_string(WTERMSIG(status)) + " (" +
+                           strsignal(WTERMSIG(status)) + ")" +
+                           (WTERMSIG(status) == SIGKILL ? ", perhaps by the kernel for lack of memory" : ""));
+        switch (WEXITSTATUS(status))
+          {
+          case meshed:
+            break;
+          case exited_early:
+            throw InputError(entry + ": gmsh stopped before the mesh was written (does the .geo say Exit?)");
+          default:
+            throw InputError(entry + " could not be meshed by gmsh" + (error.empty() ? "" : ": " + error));
+          }
+        if (msh.empty())
+          throw InputError(entry + ": gmsh wrote no mesh" + (error.empty() ? "" : ": " + error));
+      });
+      return dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, msh, 0);
     }
 
     void read_gmsh(Triangulation<2> &triangulation, const GeometryParameters &geometry,
                    const MeshParameters &mesh)
     {
-      const bool        is_geo   = std::filesystem::path(mesh.mesh_file).extension() == ".geo";
-      const std::string msh_file = is_geo ? mesh_geo_file(mesh.mesh_file, geometry) : mesh.mesh_file;
-      GridIn<2>         grid_in(triangulation);
+      const std::string entry  = "Mesh/Mesh file = " + in_quotes(mesh.mesh_file);
+      const bool        is_geo = std::filesystem::path(mesh.mesh_file).extension() == ".geo";
       try
         {
           // The stream reader takes boundary ids from the physical tags.
-          std::ifstream in(msh_file);
-          grid_in.read_msh(in);
+          std::istringstream geo_mesh(is_geo ? mesh_geo_file(mesh.mesh_file, geometry) : "");
+          std::ifstream      msh_file;
+          if (!is_geo)
+            msh_file.open(mesh.mesh_file);
+          GridIn<2> grid_in(triangulation);
+          grid_in.read_msh(is_geo ? static_cast<std::istream &>(geo_mesh) : msh_file);
+        }
+      catch (const InputError &)
+        {
+          throw;
+        }
+      catch (const ExceptionBase &exception)
+        {
+          throw InputError(entry +
+                           " is not a readable 2D gmsh mesh of quadrilaterals: " + one_line(exception));
         }
       catch (const std::exception &)
         {
-          if (is_geo)
-            std::filesystem::remove(msh_file);
-          throw InputError("Mesh/Mesh file = '" + mesh.mesh_file +
-                           "' is not a readable 2D gmsh mesh of quadrilaterals");
+          throw InputError(entry + " is not a readable 2D gmsh mesh of quadrilaterals");
         }
-      if (is_geo)
-        std::filesystem::remove(msh_file);
+      if (!triangulation.all_reference_cells_are_hyper_cube())
+        throw InputError(entry +
+                         " holds triangles; penny needs quadrilaterals (Mesh.RecombineAll = 1 in the .geo)");
 
       std::set<types::boundary_id> ids;
       for (const auto &face : triangulation.active_face_iterators())
@@ -186,8 +304,106 @@ namespace penny
           ids.insert(face->boundary_id());
       for (const auto id : {boundary_id::symmetry, boundary_id::gap_face, boundary_id::ligament})
         if (ids.count(id) == 0)
-          throw InputError("Mesh/Mesh file = '" + mesh.mesh_file + "' lacks physical curve tag " +
-                           std::to_string(id) + " (1 axis, 2 gap face, 3 ligament, 4 far boundary)");
+          throw InputError(entry + " lacks physical curve tag " + std::to_string(id) +
+                           " (1 axis, 2 gap face, 3 ligament, 4 far boundary)");
+    }
+
+    std::string point_text(const Point<2> &x)
+    {
+      std::ostringstream text;
+      text.precision(6);
+      text << "(r, z) = (" << x[0] << ", " << x[1] << ")";
+      return text.str();
+    }
+
+    // A mesh must be the half model of Geometry: cells that are proper
+    // quadrilaterals filling 0 <= r <= R, 0 <= z <= H exactly once, and a
+    // boundary made of the four sides, each face tagged for the side it lies
+    // on. A mesh of another size, a self-intersecting or degenerate cell, a
+    // hole, an overlap, a disconnected piece or a mistagged face is refused.
+    void check_against_geometry(const Triangulation<2> &triangulation, const GeometryParameters &geometry,
+                                const std::string &source)
+    {
+      const double         c = geometry.gap_radius, R = geometry.domain_radius, H = geometry.domain_height;
+      const double         tolerance = 1e-10 * std::max(R, H);
+      const BoundingBox<2> box       = GridTools::compute_bounding_box(triangulation);
+      if (std::abs(box.lower_bound(0)) > tolerance || std::abs(box.lower_bound(1)) > tolerance ||
+          std::abs(box.upper_bound(0) - R) > tolerance || std::abs(box.upper_bound(1) - H) > tolerance)
+        {
+          std::ostringstream message;
+          message.precision(10);
+          message << source << " spans r in [" << box.lower_bound(0) << ", " << box.upper_bound(0)
+                  << "], z in [" << box.lower_bound(1) << ", " << box.upper_bound(1)
+                  << "], not the half model 0 <= r <= R = " << R << ", 0 <= z <= H = " << H << " of Geometry";
+          throw InputError(message.str());
+        }
+
+      double area = 0;
+      for (const auto &cell : triangulation.active_cell_iterators())
+        {
+          // The Jacobian of a bilinear cell is positive inside if it is at the corners.
+          const auto v     = [&](const unsigned int i) { return cell->vertex(i); };
+          const auto cross = [](const Tensor<1, 2> &a, const Tensor<1, 2> &b) {
+            return a[0] * b[1] - a[1] * b[0];
+          };
+          const double size2 = std::pow(cell->diameter(), 2);
+          for (const double jacobian : {cross(v(1) - v(0), v(2) - v(0)), cross(v(1) - v(0), v(3) - v(1)),
+                                        cross(v(3) - v(2), v(2) - v(0)), cross(v(3) - v(2), v(3) - v(1))})
+            if (!(jacobian > 1e-12 * size2))
+              throw InputError(source + " has a degenerate or self-intersecting cell at " +
+                               point_text(cell->center()));
+          area += cell->measure();
+        }
+      if (std::abs(area - R * H) > 1e-9 * R * H)
+        throw InputError(source + (area > R * H ? " has overlapping cells" : " has holes") +
+                         ": its cells cover " + dealii::Utilities::to_string(area) +
+                         " m^2, not R H = " + dealii::Utilities::to_string(R * H) + " m^2");
+
+      // Each boundary face on its side, and the sides covered once: their lengths add up.
+      std::map<types::boundary_id, double> length;
+      const auto                           on = [&](const double value, const double line) {
+        return std::abs(value - line) <= tolerance;
+      };
+      for (const auto &face : triangulation.active_face_iterators())
+        if (face->at_boundary())
+          {
+            const Point<2> a = face->vertex(0), b = face->vertex(1);
+            const auto     id = face->boundary_id();
+            bool           placed;
+            switch (id)
+              {
+              case boundary_id::symmetry:
+                placed = on(a[0], 0) && on(b[0], 0);
+                break;
+              case boundary_id::gap_face:
+                placed = on(a[1], 0) && on(b[1], 0) && std::max(a[0], b[0]) <= c * (1 + 1e-12);
+                break;
+              case boundary_id::ligament:
+                placed = on(a[1], 0) && on(b[1], 0) && std::min(a[0], b[0]) >= c * (1 - 1e-12);
+                break;
+              case boundary_id::far:
+                placed = (on(a[0], R) && on(b[0], R)) || (on(a[1], H) && on(b[1], H));
+                break;
+              default:
+                throw InputError(source + " has a boundary face without a tag 1-4 at " +
+                                 point_text(face->center()) +
+                                 " (1 axis, 2 gap face, 3 ligament, 4 far boundary)");
+              }
+            if (!placed)
+              throw InputError(source + " has a face tagged " + std::to_string(id) + " at " +
+                               point_text(face->center()) +
+                               " off its side (1 axis r = 0, 2 gap face z = 0 r < c, 3 ligament z = 0 r > c, "
+                               "4 far boundary r = R or z = H), or a boundary inside the solid");
+            length[id] += a.distance(b);
+          }
+      for (const auto &[id, expected] : std::map<types::boundary_id, double>{{boundary_id::symmetry, H},
+                                                                             {boundary_id::gap_face, c},
+                                                                             {boundary_id::ligament, R - c},
+                                                                             {boundary_id::far, R + H}})
+        if (std::abs(length[id] - expected) > 1e-9 * expected)
+          throw InputError(source + ": the faces tagged " + std::to_string(id) + " add up to " +
+                           dealii::Utilities::to_string(length[id]) + " m, not the " +
+                           dealii::Utilities::to_string(expected) + " m of their side");
     }
 
     bool has_vertex_at_tip(const Triangulation<2> &triangulation, const GeometryParameters &geometry)
@@ -199,20 +415,24 @@ namespace penny
   } // namespace
 
   void make_penny_gap_mesh(Triangulation<2> &triangulation, const GeometryParameters &geometry,
-                           const MeshParameters &mesh)
+                           const MeshParameters &mesh, const std::function<void(double)> &check_size)
   {
     if (mesh.generator == MeshParameters::Generator::builtin)
       {
+        check_size(quadtree_cells(geometry, mesh));
         generate_quadtree(triangulation, geometry, mesh);
         if (!has_vertex_at_tip(triangulation, geometry))
           throw std::logic_error("mesh: the built-in generator placed no vertex at the crack tip");
+        check_against_geometry(triangulation, geometry, "the built-in mesh");
       }
     else
       {
         read_gmsh(triangulation, geometry, mesh);
+        const std::string source = "Mesh/Mesh file = " + in_quotes(mesh.mesh_file);
         if (!has_vertex_at_tip(triangulation, geometry))
-          throw InputError("Mesh/Mesh file = '" + mesh.mesh_file +
-                           "' has no vertex at the crack tip (c, 0) of Geometry/Gap radius c");
+          throw InputError(source + " has no vertex at the crack tip (c, 0) of Geometry/Gap radius c");
+        check_against_geometry(triangulation, geometry, source);
+        check_size(triangulation.n_active_cells() * std::pow(4., mesh.global_refinements));
       }
     triangulation.refine_global(mesh.global_refinements);
   }

@@ -21,6 +21,34 @@ namespace penny
   {
     constexpr double max_double = std::numeric_limits<double>::max();
 
+    // Magnitudes of moduli, tractions and lengths: far inside the range of
+    // double, so that no product the solver forms (stiffness E R, load P c^2,
+    // energy P^2 c^3/E', and their squares in norms) overflows or underflows.
+    constexpr double smallest_magnitude = 1e-30, largest_magnitude = 1e30;
+    // R/c and H/c.
+    constexpr double largest_aspect = 1e12;
+
+    std::string magnitude_range(const std::string &unit)
+    {
+      return "[1e-30, 1e30] " + unit;
+    }
+
+    // prm.get_double of `entry` in `section`, where a value that no double
+    // holds (a denormal, an overflow) is outside `range`.
+    double get_double_in(const ParameterHandler &prm, const std::string &section, const std::string &entry,
+                         const std::string &range)
+    {
+      try
+        {
+          return prm.get_double(entry);
+        }
+      catch (const dealii::ExceptionBase &)
+        {
+          throw InputError(section + "/" + entry + " = " + in_quotes(prm.get(entry)) +
+                           " is outside the allowed range " + range);
+        }
+    }
+
     const EnumNames<LoadParameters::Type>      load_types     = {{"uniform", LoadParameters::Type::uniform},
                                                                  {"parabolic", LoadParameters::Type::parabolic},
                                                                  {"expression", LoadParameters::Type::expression}};
@@ -35,11 +63,13 @@ namespace penny
   void GeometryParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
-    prm.declare_entry("Gap radius c", "1", Double(0), "Radius of the penny-shaped gap (crack). Units: m.");
+    prm.declare_entry("Gap radius c", "1", Double(0),
+                      "Radius of the penny-shaped gap (crack), from 1e-30 to 1e30. Units: m.");
     prm.declare_entry("Domain radius R", "1000", Double(0),
-                      "Radius of the truncated cylinder; must exceed c. Its effect on K_I shrinks "
+                      "Radius of the truncated cylinder, from c to 1e12 c. Its effect on K_I shrinks "
                       "roughly like (c/R)^3. Units: m.");
-    prm.declare_entry("Domain height H", "1000", Double(0), "Height of the half model z >= 0. Units: m.");
+    prm.declare_entry("Domain height H", "1000", Double(0),
+                      "Height of the half model z >= 0, at most 1e12 c. Units: m.");
     prm.declare_entry("Far boundary", "free", selection(far_boundaries),
                       "Condition on r = R and z = H: traction free, or clamped (u = 0).");
     prm.leave_subsection();
@@ -48,15 +78,20 @@ namespace penny
   void GeometryParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("Geometry");
-    gap_radius           = prm.get_double("Gap radius c");
-    domain_radius        = prm.get_double("Domain radius R");
-    domain_height        = prm.get_double("Domain height H");
+    gap_radius           = get_double_in(prm, "Geometry", "Gap radius c", magnitude_range("m"));
+    domain_radius        = get_double_in(prm, "Geometry", "Domain radius R", "(c, 1e12 c]");
+    domain_height        = get_double_in(prm, "Geometry", "Domain height H", "(0, 1e12 c]");
     clamped_far_boundary = to_enum(far_boundaries, prm.get("Far boundary"));
     prm.leave_subsection();
-    require(gap_radius > 0, "Geometry/Gap radius c", gap_radius, "(0, Domain radius R)");
+    require(gap_radius >= smallest_magnitude && gap_radius <= largest_magnitude, "Geometry/Gap radius c",
+            gap_radius, magnitude_range("m"));
     require(domain_radius > gap_radius, "Geometry/Domain radius R", domain_radius,
             "(Gap radius c = " + dealii::Utilities::to_string(gap_radius) + ", inf)");
-    require(domain_height > 0, "Geometry/Domain height H", domain_height, "(0, inf)");
+    const std::string c = dealii::Utilities::to_string(gap_radius);
+    require(domain_radius <= largest_aspect * gap_radius, "Geometry/Domain radius R", domain_radius,
+            "(c, 1e12 c] with Gap radius c = " + c + " m");
+    require(domain_height > 0 && domain_height <= largest_aspect * gap_radius, "Geometry/Domain height H",
+            domain_height, "(0, 1e12 c] with Gap radius c = " + c + " m");
   }
 
   double MaterialParameters::plane_strain_modulus() const
@@ -77,7 +112,8 @@ namespace penny
   void MaterialParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
-    prm.declare_entry("Young's modulus E", "1e9", Double(0), "Isotropic linear elasticity. Units: Pa.");
+    prm.declare_entry("Young's modulus E", "1e9", Double(0),
+                      "Isotropic linear elasticity, from 1e-30 to 1e30. Units: Pa.");
     prm.declare_entry("Poisson's ratio nu", "0.3", Double(-1, 0.5), "Open range (-1, 0.5). Units: none.");
     prm.leave_subsection();
   }
@@ -85,10 +121,11 @@ namespace penny
   void MaterialParameters::parse(ParameterHandler &prm)
   {
     prm.enter_subsection("Material");
-    youngs_modulus = prm.get_double("Young's modulus E");
+    youngs_modulus = get_double_in(prm, "Material", "Young's modulus E", magnitude_range("Pa"));
     poissons_ratio = prm.get_double("Poisson's ratio nu");
     prm.leave_subsection();
-    require(youngs_modulus > 0, "Material/Young's modulus E", youngs_modulus, "(0, inf)");
+    require(youngs_modulus >= smallest_magnitude && youngs_modulus <= largest_magnitude,
+            "Material/Young's modulus E", youngs_modulus, magnitude_range("Pa"));
     require(poissons_ratio > -1 && poissons_ratio < 0.5, "Material/Poisson's ratio nu", poissons_ratio,
             "(-1, 0.5)");
   }
@@ -100,7 +137,8 @@ namespace penny
                       "Face traction p(r) opening the gap: uniform p = P; parabolic (Bueckner) "
                       "p = P (1 - r^2/a^2); expression: any p(r) in 'Expression'.");
     prm.declare_entry("Peak tension P", "1e6", Double(-max_double, max_double),
-                      "P: the uniform value, or the peak of the parabola at r = 0. Units: Pa.");
+                      "P: the uniform value, or the peak of the parabola at r = 0; 0 or |P| from 1e-30 to "
+                      "1e30. Units: Pa.");
     prm.declare_entry("Parabola given by", "a", selection(parabola_forms),
                       "Whether the parabola is fixed by its tensile radius a or by the pressure "
                       "summit radius R_p, with a^2 = 2 R_p P.");
@@ -118,11 +156,11 @@ namespace penny
   {
     prm.enter_subsection("Load");
     type          = to_enum(load_types, prm.get("Type"));
-    peak_tension  = prm.get_double("Peak tension P");
+    peak_tension  = get_double_in(prm, "Load", "Peak tension P", "0 or |P| in " + magnitude_range("Pa"));
     summit_radius = prm.get_double("Summit radius R_p");
     require(summit_radius > 0, "Load/Summit radius R_p", summit_radius, "(0, inf)");
     if (!to_enum(parabola_forms, prm.get("Parabola given by")))
-      tension_radius = prm.get_double("Tension radius a");
+      tension_radius = get_double_in(prm, "Load", "Tension radius a", magnitude_range("m"));
     else
       {
         require(peak_tension > 0, "Load/Peak tension P", peak_tension,
@@ -131,7 +169,11 @@ namespace penny
       }
     expression = prm.get("Expression");
     prm.leave_subsection();
-    require(tension_radius > 0, "Load/Tension radius a", tension_radius, "(0, inf)");
+    require(tension_radius >= smallest_magnitude && tension_radius <= largest_magnitude,
+            "Load/Tension radius a", tension_radius, magnitude_range("m"));
+    require(std::abs(peak_tension) <= largest_magnitude &&
+                (peak_tension == 0 || std::abs(peak_tension) >= smallest_magnitude),
+            "Load/Peak tension P", peak_tension, "0 or |P| in " + magnitude_range("Pa"));
   }
 
   void MeshParameters::declare(ParameterHandler &prm)

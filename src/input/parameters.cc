@@ -5,9 +5,17 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/ptree.hpp>
+#include <boost/property_tree/xml_parser.hpp>
+
 #include <algorithm>
+#include <cctype>
 #include <filesystem>
+#include <fstream>
+#include <map>
 #include <regex>
+#include <set>
 #include <typeinfo>
 
 namespace penny
@@ -86,6 +94,146 @@ namespace penny
       if (std::filesystem::path(path).is_relative())
         path = (std::filesystem::path(folder) / path).lexically_normal().string();
     }
+
+    // One statement of a .prm file: its keyword (set, subsection, end,
+    // include, in any case) and the rest of the line.
+    std::pair<std::string, std::string> statement(const std::string &line)
+    {
+      const std::string trimmed = dealii::Utilities::trim(line);
+      const std::size_t blank   = trimmed.find_first_of(" \t");
+      std::string       keyword = trimmed.substr(0, blank);
+      std::transform(keyword.begin(), keyword.end(), keyword.begin(),
+                     [](const unsigned char ch) { return std::tolower(ch); });
+      return {keyword, blank == std::string::npos ? "" : dealii::Utilities::trim(trimmed.substr(blank))};
+    }
+
+    // What deal.II's reader does not check: it follows `include FILE` (at
+    // the current subsection, relative to the working folder) without end,
+    // and lets the last of two `set` statements of one entry win silently.
+    // A cycle of includes and an entry set twice are errors naming the lines.
+    class StatementCheck
+    {
+    public:
+      void check(const std::string &filename)
+      {
+        const std::string file = std::filesystem::weakly_canonical(filename).string();
+        if (std::find(open_files.begin(), open_files.end(), file) != open_files.end())
+          throw InputError("parameter file " + in_quotes(filename) +
+                           " includes itself (a cycle of include statements)");
+        if (open_files.size() == 16)
+          throw InputError("parameter file " + in_quotes(filename) +
+                           ": include statements nest deeper than 16 files");
+        std::ifstream in(filename);
+        if (!in)
+          return; // deal.II's reader names the file it cannot open
+        open_files.push_back(file);
+        std::string  line;
+        unsigned int number = 0;
+        while (std::getline(in, line))
+          {
+            const unsigned int first = ++number;
+            // A backslash at the end continues the line.
+            for (std::string next; !line.empty() && line.back() == '\\' && std::getline(in, next); ++number)
+              line = line.substr(0, line.size() - 1) + next;
+            const std::size_t comment = line.find('#');
+            if (comment != std::string::npos)
+              line.erase(comment);
+            const auto [keyword, rest] = statement(line);
+            // Lines of an included file name the file.
+            const std::string where =
+                (open_files.size() > 1 ? in_quotes(filename) + ", " : "") + "line " + std::to_string(first);
+            if (keyword == "subsection")
+              path.push_back(rest);
+            else if (keyword == "end" && !path.empty())
+              path.pop_back();
+            else if (keyword == "include")
+              check(rest);
+            else if (keyword == "set" && rest.find('=') != std::string::npos)
+              {
+                std::string entry;
+                for (const std::string &subsection : path)
+                  entry += subsection + "/";
+                entry += dealii::Utilities::trim(rest.substr(0, rest.find('=')));
+                const auto [earlier, first_time] = set_at.emplace(entry, where);
+                if (!first_time)
+                  throw InputError(where + ": " + entry + " is set a second time (first on " +
+                                   earlier->second + "); set each entry once");
+              }
+          }
+        open_files.pop_back();
+      }
+
+    private:
+      std::vector<std::string>           open_files; // the chain of includes being read
+      std::vector<std::string>           path;       // subsections entered
+      std::map<std::string, std::string> set_at;     // entry -> where it was set
+    };
+
+    // deal.II writes names in XML (and may in JSON) with every character
+    // other than a letter or digit as _XX, its code in hex.
+    std::string demangled(const std::string &name)
+    {
+      std::string plain;
+      for (std::size_t i = 0; i < name.size(); ++i)
+        if (name[i] == '_' && i + 2 < name.size() && std::isxdigit(static_cast<unsigned char>(name[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(name[i + 2])))
+          {
+            plain += static_cast<char>(std::stoi(name.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+          }
+        else
+          plain += name[i];
+      return plain;
+    }
+
+    // deal.II reads JSON and XML parameter files without naming the entry
+    // whose value it rejects, and lets a repeated key win silently. Each
+    // entry is set once here first, so that an error names it.
+    void check_entries(ParameterHandler &prm, const boost::property_tree::ptree &node,
+                       const std::vector<std::string> &path, const std::string &scene)
+    {
+      std::set<std::string> seen;
+      for (const auto &[key, child] : node)
+        {
+          const std::string name = demangled(key);
+          std::string       full;
+          for (const std::string &subsection : path)
+            full += subsection + "/";
+          full += name;
+          if (!seen.insert(name).second)
+            throw InputError(full + " appears twice; set each entry once");
+          if (!child.empty() && !child.get_child_optional("value"))
+            {
+              std::vector<std::string> subsection_path = path;
+              subsection_path.push_back(name);
+              if (!prm.subsection_path_exists(subsection_path))
+                throw InputError("subsection '" + full + "' is " +
+                                 (scene.empty()
+                                      ? "not a subsection of penny"
+                                      : "not read by Scene = " + scene + " ('penny --print-parameters " +
+                                            scene + "' lists what it reads)"));
+              check_entries(prm, child, subsection_path, scene);
+              continue;
+            }
+          const std::string value = child.empty() ? child.data() : child.get<std::string>("value");
+          for (const std::string &subsection : path)
+            prm.enter_subsection(subsection);
+          try
+            {
+              prm.set(name, value);
+            }
+          catch (const ParameterHandler::ExcEntryUndeclared &)
+            {
+              throw InputError(full + " is not an entry of penny ('penny --print-parameters' lists them)");
+            }
+          catch (const dealii::ExceptionBase &exception)
+            {
+              throw InputError(full + " = " + in_quotes(value) + ": " + one_line(exception));
+            }
+          for (std::size_t i = 0; i < path.size(); ++i)
+            prm.leave_subsection();
+        }
+    }
   } // namespace
 
   std::string section_names(const std::vector<Section> &sections)
@@ -150,7 +298,32 @@ namespace penny
   void parse_parameter_file(ParameterHandler &prm, const std::string &filename, const std::string &scene)
   {
     if (!std::filesystem::is_regular_file(filename))
-      throw InputError("parameter file '" + filename + "' does not exist or is not a file");
+      throw InputError("parameter file " + in_quotes(filename) + " does not exist or is not a file");
+    const std::string extension = std::filesystem::path(filename).extension();
+    if (extension == ".prm")
+      StatementCheck().check(filename);
+    else if (extension == ".json" || extension == ".xml")
+      {
+        boost::property_tree::ptree tree;
+        try
+          {
+            if (extension == ".json")
+              boost::property_tree::read_json(filename, tree);
+            else
+              {
+                boost::property_tree::read_xml(filename, tree);
+                tree = tree.get_child("ParameterHandler");
+              }
+          }
+        catch (const boost::property_tree::ptree_error &error)
+          {
+            throw InputError("parameter file " + in_quotes(filename) + " is not valid " +
+                             extension.substr(1) + ": " + one_line(error.what()));
+          }
+        check_entries(prm, tree, {}, scene);
+      }
+    else
+      throw InputError("parameter file " + in_quotes(filename) + " is neither .prm, .json nor .xml");
     try
       {
         prm.parse_input(filename);

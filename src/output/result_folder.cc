@@ -1,5 +1,6 @@
 #include "output/result_folder.h"
 
+#include "input/collective.h"
 #include "input/input_error.h"
 
 #include <deal.II/base/mpi.h>
@@ -8,7 +9,8 @@
 #include <cstdio>
 #include <cstring>
 #include <fcntl.h>
-#include <fstream>
+#include <sys/file.h>
+#include <sys/stat.h>
 #include <unistd.h>
 
 namespace penny
@@ -24,101 +26,183 @@ namespace penny
       return dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
     }
 
-    // Runs `action` on rank 0; the message of an exception it throws reaches
-    // every rank, where it is thrown again (as InputError if it was one).
-    template <typename Action> void on_rank_zero_for_all(Action &&action)
-    {
-      std::string message;
-      bool        input_error = false;
-      if (on_rank_zero())
-        try
-          {
-            action();
-          }
-        catch (const InputError &error)
-          {
-            message     = error.what();
-            input_error = true;
-          }
-        catch (const std::exception &error)
-          {
-            message = error.what();
-          }
-      message     = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, message, 0);
-      input_error = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, input_error, 0);
-      if (message.empty())
-        return;
-      if (input_error)
-        throw InputError(message);
-      throw std::runtime_error(message);
-    }
-
-    // On rank 0: `contents` into `path`, or an exception.
-    void write_file(const fs::path &path, const std::string &contents)
-    {
-      std::ofstream out(path, std::ios::binary);
-      out << contents;
-      out.close();
-      if (!out)
-        throw std::runtime_error("output: could not write " + path.string());
-    }
-
     std::string errno_text()
     {
       return std::strerror(errno);
     }
+
+    // The file or folder at `path` reaches the disk.
+    void sync_to_disk(const fs::path &path, const std::string &what)
+    {
+      const int descriptor = open(path.c_str(), O_RDONLY | O_CLOEXEC);
+      if (descriptor < 0 || fsync(descriptor) != 0)
+        {
+          const std::string reason = errno_text();
+          if (descriptor >= 0)
+            close(descriptor);
+          throw std::runtime_error("output: could not sync " + what + ": " + reason);
+        }
+      close(descriptor);
+    }
+
+    // On rank 0: `contents` into the new file `path` (never through a link),
+    // all of it or an exception naming `what`, and on the disk before it returns.
+    void write_file(const fs::path &path, const std::string &contents, const std::string &what)
+    {
+      const int descriptor = open(path.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_NOFOLLOW | O_CLOEXEC, 0644);
+      if (descriptor < 0)
+        throw std::runtime_error("output: could not create " + what + ": " + errno_text());
+      const auto fail = [&]() {
+        const std::string reason = errno_text();
+        close(descriptor);
+        throw std::runtime_error("output: could not write " + what + ": " + reason);
+      };
+      for (std::size_t written = 0; written < contents.size();)
+        {
+          const ssize_t n = ::write(descriptor, contents.data() + written, contents.size() - written);
+          if (n < 0 && errno == EINTR)
+            continue;
+          if (n <= 0)
+            {
+              if (n == 0)
+                errno = ENOSPC; // a write that makes no progress
+              fail();
+            }
+          written += n;
+        }
+      if (fsync(descriptor) != 0)
+        fail();
+      if (close(descriptor) != 0)
+        throw std::runtime_error("output: could not write " + what + ": " + errno_text());
+    }
+
+    // Staging folders are named .NAME.staging-XXXXXX, beside the folder NAME.
+    std::string staging_prefix(const fs::path &target)
+    {
+      return "." + target.filename().string() + ".staging-";
+    }
   } // namespace
 
-  ResultFolder::ResultFolder(const fs::path &directory, const fs::path &input_file)
+  ResultFolder::ResultFolder(const fs::path &directory, const std::vector<fs::path> &input_files)
       : final_directory(directory)
   {
-    const fs::path target = directory.empty() ? fs::path(".") : directory;
-    on_rank_zero_for_all([&]() {
-      const std::string entry = "Output/Directory = '" + directory.string() + "'";
-      std::error_code   error;
-      if (fs::exists(target, error))
+    run_on_rank_zero([&]() {
+      try
         {
-          if (!fs::is_directory(target))
-            throw InputError(entry + " is not a folder");
-          const auto inside = [&](const fs::path &path) {
-            const fs::path relative = fs::weakly_canonical(path).lexically_relative(fs::canonical(target));
-            return !relative.empty() && *relative.begin() != "..";
-          };
-          if (inside(fs::current_path()))
-            throw InputError(entry + " holds the working folder; a run replaces its output folder whole");
-          if (!input_file.empty() && inside(input_file))
-            throw InputError(entry + " holds the parameter file '" + input_file.string() +
-                             "'; a run replaces its output folder whole");
-          if (!fs::is_empty(target) && !fs::exists(target / marker))
-            throw InputError(entry + " holds files penny did not write; name a new or empty folder (a run "
-                                     "replaces its output folder whole)");
+          prepare(input_files);
         }
-      const fs::path parent = fs::absolute(target).lexically_normal().parent_path();
-      fs::create_directories(parent, error);
-      std::string pattern =
-          (parent / ("." + fs::absolute(target).lexically_normal().filename().string() + ".staging-XXXXXX"))
-              .string();
-      if (error || access(parent.c_str(), W_OK) != 0 || !mkdtemp(pattern.data()))
-        throw InputError(entry + " cannot be created or is not writable");
-      staging_directory = pattern;
-      write_file(staging_directory / marker,
-                 "results of penny, replaced whole by the next run into this folder\n");
+      catch (...)
+        {
+          release();
+          throw;
+        }
     });
-    staging_directory = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, staging_directory.string(), 0);
   }
 
   ResultFolder::~ResultFolder()
   {
-    if (!committed && on_rank_zero())
+    if (on_rank_zero())
+      release();
+  }
+
+  fs::path ResultFolder::folder() const
+  {
+    const fs::path target =
+        fs::absolute(final_directory.empty() ? fs::path(".") : final_directory).lexically_normal();
+    return target.has_filename() ? target : target.parent_path(); // "out/" normalises to "out/"
+  }
+
+  void ResultFolder::prepare(const std::vector<fs::path> &input_files)
+  {
+    const std::string entry  = "Output/Directory = " + in_quotes(final_directory.string());
+    const fs::path    target = folder();
+    const fs::path    parent = target.parent_path();
+    if (!target.has_filename() || target == parent)
+      throw InputError(entry + " is not a folder penny can replace");
+    std::error_code error;
+    fs::create_directories(parent, error);
+    if (error || access(parent.c_str(), W_OK) != 0)
+      throw InputError(entry + " cannot be created or is not writable");
+
+    // The lock first: everything below looks at a folder no other run touches.
+    const fs::path lock_file = parent / ("." + target.filename().string() + ".lock");
+    lock                     = open(lock_file.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
+    if (lock < 0 && errno == ELOOP)
+      throw InputError(entry + " cannot be locked: its lock file " + in_quotes(lock_file.string()) +
+                       " is a symbolic link");
+    if (lock < 0)
+      throw InputError(entry + " cannot be created or is not writable (lock file " +
+                       in_quotes(lock_file.string()) + ": " + errno_text() + ")");
+    struct stat status;
+    if (fstat(lock, &status) != 0 || !S_ISREG(status.st_mode))
+      throw InputError(entry + " cannot be locked: its lock file " + in_quotes(lock_file.string()) +
+                       " is not a regular file");
+    if (flock(lock, LOCK_EX | LOCK_NB) != 0)
+      throw InputError(entry + " is in use by another penny run (it holds " + in_quotes(lock_file.string()) +
+                       "); wait for that run or name another folder");
+
+    const fs::file_status target_status = fs::symlink_status(target, error);
+    if (fs::exists(target_status))
       {
-        std::error_code ignored;
-        fs::remove_all(staging_directory, ignored);
+        if (fs::is_symlink(target_status))
+          throw InputError(entry + " is a symbolic link; name the folder itself (a run replaces its output "
+                                   "folder whole)");
+        if (!fs::is_directory(target_status))
+          throw InputError(entry + " is not a folder");
+        const auto inside = [&](const fs::path &path) {
+          const fs::path relative = fs::weakly_canonical(path).lexically_relative(fs::canonical(target));
+          return !relative.empty() && *relative.begin() != "..";
+        };
+        if (inside(fs::current_path()))
+          throw InputError(entry + " holds the working folder; a run replaces its output folder whole");
+        for (const fs::path &input : input_files)
+          if (!input.empty() && inside(input))
+            throw InputError(entry + " holds the input file " + in_quotes(input.string()) +
+                             "; a run replaces its output folder whole");
+        if (!fs::is_empty(target) && !fs::exists(target / marker))
+          throw InputError(entry + " holds files penny did not write; name a new or empty folder (a run "
+                                   "replaces its output folder whole)");
       }
+
+    // Staging folders of runs that were killed (empty, or penny's results):
+    // no live run uses them while we hold the lock.
+    const std::string     prefix = staging_prefix(target);
+    std::vector<fs::path> stale;
+    for (const auto &item : fs::directory_iterator(parent, error))
+      {
+        const std::string name = item.path().filename().string();
+        if (name.size() == prefix.size() + 6 && name.compare(0, prefix.size(), prefix) == 0 &&
+            !item.is_symlink() && item.is_directory() &&
+            (fs::is_empty(item.path(), error) || fs::exists(item.path() / marker, error)))
+          stale.push_back(item.path());
+      }
+    for (const fs::path &path : stale)
+      fs::remove_all(path, error);
+
+    std::string pattern = (parent / (prefix + "XXXXXX")).string();
+    if (!mkdtemp(pattern.data()))
+      throw InputError(entry + " cannot be created or is not writable (" + errno_text() + ")");
+    staging_directory = pattern;
+    write_file(staging_directory / marker,
+               "results of penny, replaced whole by the next run into this folder\n",
+               (final_directory / marker).string());
+  }
+
+  void ResultFolder::release()
+  {
+    std::error_code ignored;
+    if (!committed && !staging_directory.empty())
+      fs::remove_all(staging_directory, ignored);
+    staging_directory.clear();
+    if (lock >= 0)
+      close(lock); // releases the flock
+    lock = -1;
   }
 
   void ResultFolder::write(const std::string &file, const std::string &contents) const
   {
-    on_rank_zero_for_all([&]() { write_file(staging_directory / file, contents); });
+    run_on_rank_zero(
+        [&]() { write_file(staging_directory / file, contents, (final_directory / file).string()); });
   }
 
   void ResultFolder::write_csv(const std::string &file, const Table &table) const
@@ -126,24 +210,31 @@ namespace penny
     write(file, table.csv());
   }
 
-  // With the target in place, the two folders swap names in one step
-  // (renameat2 RENAME_EXCHANGE), and the previous results are removed.
+  // The staging folder reaches the disk with its files; then, with the target
+  // in place, the two folders swap names in one step (renameat2
+  // RENAME_EXCHANGE), the swap reaches the disk, and the previous results go.
   void ResultFolder::commit()
   {
-    on_rank_zero_for_all([&]() {
-      const fs::path  target = final_directory.empty() ? fs::path(".") : final_directory;
-      std::error_code error;
-      if (fs::exists(target, error))
+    run_on_rank_zero([&]() {
+      const fs::path    target = folder();
+      const std::string name   = final_directory.string();
+      const mode_t      mask   = umask(0);
+      umask(mask);
+      if (chmod(staging_directory.c_str(), 0777 & ~mask) != 0)
+        throw std::runtime_error("output: could not open " + name + " to its readers: " + errno_text());
+      sync_to_disk(staging_directory, name);
+      const bool replaces = fs::exists(fs::symlink_status(target));
+      if (renameat2(AT_FDCWD, staging_directory.c_str(), AT_FDCWD, target.c_str(),
+                    replaces ? RENAME_EXCHANGE : RENAME_NOREPLACE) != 0)
+        throw std::runtime_error("output: could not move the results into " + name + ": " + errno_text());
+      committed = true;
+      if (replaces) // the staging folder now holds the previous results
         {
-          if (renameat2(AT_FDCWD, staging_directory.c_str(), AT_FDCWD, target.c_str(), RENAME_EXCHANGE) != 0)
-            throw std::runtime_error("output: could not move the results into " + target.string() + ": " +
-                                     errno_text());
-          fs::remove_all(staging_directory, error);
+          std::error_code ignored;
+          fs::remove_all(staging_directory, ignored);
         }
-      else if (renameat2(AT_FDCWD, staging_directory.c_str(), AT_FDCWD, target.c_str(), RENAME_NOREPLACE) !=
-               0)
-        throw std::runtime_error("output: could not move the results into " + target.string() + ": " +
-                                 errno_text());
+      sync_to_disk(target.parent_path(), "the folder holding " + name);
+      release();
     });
     committed = true;
   }

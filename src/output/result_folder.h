@@ -2,10 +2,15 @@
 // staging folder beside Output/Directory; when the scene has finished, the
 // staging folder takes the place of Output/Directory in one rename, and the
 // previous results go. A run that fails removes its staging folder and leaves
-// the previous results untouched.
+// the previous results untouched; one that is killed leaves at most a stale
+// staging folder, which the next run into the same folder removes.
 //
 // Output/Directory belongs to penny: it is replaced whole, so it must be new,
-// empty, or an earlier result folder (marked by the file .penny-results).
+// empty, or an earlier result folder (marked by the file .penny-results). One
+// run at a time holds it: an flock on the lock file .NAME.lock beside it, held
+// until the results are in place and released by the kernel when a run dies.
+// Every write is checked (a short write, a full disk and a failed fsync are
+// errors), and each file and the folder reach the disk before the rename.
 // All members are collective over MPI_COMM_WORLD: rank 0 writes, the other
 // ranks learn whether it succeeded, and an error reaches every rank.
 #pragma once
@@ -14,24 +19,26 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 namespace penny
 {
   class ResultFolder
   {
   public:
-    // Checks Output/Directory and creates the staging folder; throws
-    // InputError (naming Output/Directory) where that is impossible, or where
-    // replacing the folder would remove the working folder or `input_file`.
-    ResultFolder(const std::filesystem::path &directory, const std::filesystem::path &input_file);
+    // Locks Output/Directory, checks it and creates the staging folder; throws
+    // InputError (naming Output/Directory) where that is impossible, where
+    // another run holds the folder, or where replacing the folder would remove
+    // the working folder or one of `input_files`.
+    ResultFolder(const std::filesystem::path              &directory,
+                 const std::vector<std::filesystem::path> &input_files);
     ResultFolder(const ResultFolder &) = delete;
     ~ResultFolder();
 
     // The results' final folder, as the user named it.
     const std::filesystem::path &directory() const { return final_directory; }
-    // Where the files go until commit().
-    const std::filesystem::path &staging() const { return staging_directory; }
 
+    // `contents` as `file` of the results; collective, the contents of rank 0 count.
     void write(const std::string &file, const std::string &contents) const;
     void write_csv(const std::string &file, const Table &table) const;
 
@@ -39,7 +46,16 @@ namespace penny
     void commit();
 
   private:
-    std::filesystem::path final_directory, staging_directory;
+    // Rank 0: the absolute path of the folder.
+    std::filesystem::path folder() const;
+    // Rank 0: the lock, the checks and the staging folder.
+    void prepare(const std::vector<std::filesystem::path> &input_files);
+    // Rank 0: removes the staging folder unless committed, and unlocks.
+    void release();
+
+    std::filesystem::path final_directory;
+    std::filesystem::path staging_directory; // rank 0
+    int                   lock      = -1;    // rank 0: the descriptor of the locked lock file
     bool                  committed = false;
   };
 } // namespace penny

@@ -72,7 +72,8 @@ namespace penny
   {
     const auto                    &sequence = *parameters.convergence;
     const auto                    &radii    = parameters.j_integral->ring_radii;
-    const std::vector<std::string> phases   = {"mesh", "setup", "assembly", "solve", "J-integral"};
+    const std::vector<std::string> phases   = {"mesh",  "setup",      "assembly",
+                                               "solve", "J-integral", "closed form"};
     const Table::Format            digits{12, false};
     std::vector<Table::Column>     columns = {
             {"cycle"}, {setting_name(sequence.strategy), digits}, {"cells"}, {"DoFs"}};
@@ -116,7 +117,7 @@ namespace penny
           {
             row.stress_intensity_factors.push_back(ring.signed_stress_intensity_factor);
             row.error = std::max(row.error, relative_error(ring.signed_stress_intensity_factor,
-                                                           solved.exact_stress_intensity_factor));
+                                                           solved.exact_stress_intensity_factor.value));
           }
         if (!rows.empty())
           row.rate =

@@ -5,6 +5,7 @@
 
 #include "fe/face_load.h"
 #include "fe/penny_gap_model.h"
+#include "fracture/sneddon_solution.h"
 #include "input/parameters.h"
 #include "output/result_folder.h"
 
@@ -26,9 +27,11 @@ namespace penny
   struct PennySceneResults
   {
     std::vector<RingResult> rings;
-    double                  exact_stress_intensity_factor;
-    double                  opening_at_centre, exact_opening_at_centre; // one face (m)
-    double                  gap_volume, exact_gap_volume;               // both faces (m^3)
+    ClosedForm              exact_stress_intensity_factor;
+    double                  opening_at_centre; // one face (m)
+    ClosedForm              exact_opening_at_centre;
+    double                  gap_volume; // both faces (m^3)
+    ClosedForm              exact_gap_volume;
     unsigned int            n_cells;
     unsigned int            n_dofs;
     double                  relative_residual;  // the larger of the two solves

@@ -204,14 +204,21 @@ namespace penny
     return file;
   }
 
-  // The output folder is checked before the scene runs, and the parameters
-  // are recorded last: a run that fails leaves the previous results as they were.
+  // The output folder is checked (and locked) before the scene runs, and the
+  // parameters are recorded last: a run that fails leaves the previous
+  // results as they were. Replacing the folder must not remove an input.
   Verdict run_scene_file(const std::string &filename, std::ostream &log)
   {
-    const SceneFile file = read_scene_file(filename);
+    const SceneFile                    file        = read_scene_file(filename);
+    std::vector<std::filesystem::path> input_files = {filename};
+    if (file.parameters.mesh && file.parameters.mesh->generator == MeshParameters::Generator::gmsh)
+      input_files.push_back(file.parameters.mesh->mesh_file);
+    if (file.parameters.roughness &&
+        file.parameters.roughness->spectrum == RoughnessParameters::Spectrum::file)
+      input_files.push_back(file.parameters.roughness->spectrum_file);
     log << "penny: scene " << file.scene->name << " (" << filename << "): " << file.scene->description
         << "\n\n";
-    ResultFolder  results(file.parameters.output.value().directory, filename);
+    ResultFolder  results(file.parameters.output.value().directory, input_files);
     const Verdict verdict = file.scene->run(file.parameters, results, log);
     results.write("parameters.prm", file.used_parameters);
     results.commit();

@@ -1,0 +1,134 @@
+#include "fe/problem_size.h"
+
+#include "input/input_error.h"
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <limits>
+#include <sstream>
+#include <sys/resource.h>
+#include <unistd.h>
+
+namespace penny
+{
+  // The quadtree's construction, counted: a coarse grid of width s, then at
+  // each width w from s down to the tip width the cells of the lattice of
+  // width w (origin 0) whose box lies closer to the tip than
+  // `grading_distance` widths are split, each into four. A cell of width w
+  // exists where its parent was split, and a cell close enough to be split
+  // has a parent closer still, so the split cells of width w are exactly the
+  // close lattice cells inside the domain. The balancing of levels across
+  // vertices adds a few per cent (tests/test_problem_size.cc).
+  double quadtree_cells(const GeometryParameters &physical_geometry, const MeshParameters &mesh)
+  {
+    const double c     = physical_geometry.gap_radius;
+    const double ratio = mesh.cell_aspect_ratio;
+    const double z0    = std::min(c, physical_geometry.domain_height / 2);
+    const double R     = physical_geometry.domain_radius;
+    const double H     = z0 + (physical_geometry.domain_height - z0) / ratio;
+    const double s     = c * std::pow(2., std::floor(std::log2(std::min(R, H) / (2 * c))));
+    const double n_r   = std::max(1., std::floor(R / s + 1e-12));
+    const double n_z   = std::max(1., std::floor(H / s + 1e-12));
+    const double g     = mesh.grading_distance;
+
+    double       cells     = n_r * n_z;
+    const double tip_width = c / std::pow(2., mesh.tip_levels);
+    for (double w = s; w > tip_width * (1 + 1e-9); w /= 2)
+      {
+        // Lattice columns i (r in [i w, (i + 1) w]) and rows j near the tip (c, 0).
+        const double tip       = c / w;
+        const double first     = std::max(0., std::floor(tip - g - 1));
+        const double last      = std::min(n_r * s / w - 1, std::ceil(tip + g + 1));
+        const double top       = std::min(n_z * s / w - 1, std::ceil(g));
+        double       n_refined = 0;
+        for (double i = first; i <= last; ++i)
+          for (double j = 0; j <= top; ++j)
+            {
+              const double dr = std::max({i - tip, tip - (i + 1), 0.});
+              if (std::hypot(dr, j) < g * (1 - 1e-9))
+                ++n_refined;
+            }
+        cells += 3 * n_refined;
+      }
+    return cells * std::pow(4., mesh.global_refinements);
+  }
+
+  // Calibrated on this project's meshes (tests/test_problem_size.cc checks
+  // the first two against built systems): Q_p elements with two components
+  // have about 2 p (p + 1/2) degrees of freedom per cell on the graded
+  // quadtree (hanging nodes add the p/2), and a row of the condensed matrix
+  // holds about 2 (p + 1)(p + 3) entries. Memory, against the peak resident
+  // size of penny-gap runs less the 160 MB of a run that builds nothing
+  // (4e3 to 9e5 DoFs, degrees 1, 2 and 4): about 3 kB per cell on each rank
+  // (the triangulation is held whole on every rank), and per matrix entry
+  // 110 bytes with UMFPACK or MUMPS (the matrix, its serial copy and the LU
+  // factors, whose fill grows slowly with the size) or 50 bytes with CG and
+  // AMG. The estimate lies 10-50 % above what was measured.
+  ProblemSize problem_size(const double cells, const unsigned int degree,
+                           const LinearSolverParameters::Type solver, const unsigned int n_ranks)
+  {
+    ProblemSize  size;
+    const double p               = degree;
+    size.cells                   = cells;
+    size.dofs                    = 2 * p * (p + 0.5) * cells;
+    size.matrix_entries          = size.dofs * 2 * (p + 1) * (p + 3);
+    const double fill            = 1 + 0.05 * std::max(0., std::log2(size.dofs / 2e4));
+    const double bytes_per_entry = solver == LinearSolverParameters::Type::direct ? 110 * fill : 50;
+    size.bytes                   = n_ranks * 3e3 * cells + bytes_per_entry * size.matrix_entries;
+    return size;
+  }
+
+  double available_memory()
+  {
+    double        available = std::numeric_limits<double>::infinity();
+    std::string   key;
+    double        value;
+    std::string   unit;
+    std::ifstream meminfo("/proc/meminfo");
+    while (meminfo >> key >> value >> unit)
+      if (key == "MemAvailable:")
+        available = value * 1024;
+    // cgroup v2: the limit and what the group uses now.
+    std::ifstream limit_file("/sys/fs/cgroup/memory.max"), usage_file("/sys/fs/cgroup/memory.current");
+    double        limit, usage;
+    if (limit_file >> limit && usage_file >> usage)
+      available = std::min(available, std::max(0., limit - usage));
+    // The address space left: the limit less what the process maps already.
+    rlimit address_space;
+    if (getrlimit(RLIMIT_AS, &address_space) == 0 && address_space.rlim_cur != RLIM_INFINITY)
+      available = std::min(available, std::max(0., double(address_space.rlim_cur) - mapped_memory()));
+    return available;
+  }
+
+  double mapped_memory()
+  {
+    std::ifstream statm("/proc/self/statm");
+    double        pages = 0;
+    statm >> pages;
+    return pages * sysconf(_SC_PAGESIZE);
+  }
+
+  void check_problem_size(const ProblemSize &size, const std::string &entries)
+  {
+    const double budget =
+        dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, memory_share * available_memory(), 0);
+    if (size.bytes <= budget)
+      return;
+    const auto gib = [](const double bytes) {
+      std::ostringstream text;
+      text.precision(3);
+      text << bytes / (1024. * 1024 * 1024) << " GiB";
+      return text.str();
+    };
+    std::ostringstream message;
+    message.precision(2);
+    message << entries << ": about " << size.cells << " cells, " << size.dofs << " degrees of freedom and "
+            << gib(size.bytes) << "; this run may use " << gib(budget) << " (" << memory_share * 100
+            << " % of the memory available)";
+    throw InputError(message.str());
+  }
+} // namespace penny

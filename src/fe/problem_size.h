@@ -1,0 +1,43 @@
+// How large a penny-gap model will be, known before it is built: the cells of
+// the built-in quadtree counted from the parameters, the degrees of freedom,
+// matrix entries and memory that follow from the cells, and the memory this
+// run can get. A model that would not fit is refused with one line naming
+// the entries that make it large, instead of ending in std::bad_alloc after
+// minutes of work.
+#pragma once
+
+#include "input/fe_parameters.h"
+
+#include <string>
+
+namespace penny
+{
+  // Active cells of the built-in quadtree (fe/penny_gap_mesh.cc) after the
+  // global refinements, counted level by level without building it.
+  double quadtree_cells(const GeometryParameters &geometry, const MeshParameters &mesh);
+
+  struct ProblemSize
+  {
+    double cells;
+    double dofs;
+    double matrix_entries;
+    double bytes; // all ranks together, with the factorisation of the direct solver
+  };
+
+  ProblemSize problem_size(double cells, unsigned int degree, LinearSolverParameters::Type solver,
+                           unsigned int n_ranks);
+
+  // The memory this run can get (bytes): MemAvailable of /proc/meminfo, the
+  // free part of the cgroup's limit and of RLIMIT_AS, whichever is least.
+  double available_memory();
+
+  // The address space this process maps now (bytes).
+  double mapped_memory();
+
+  // The share of the available memory a model may take.
+  constexpr double memory_share = 0.75;
+
+  // Throws InputError, naming `entries`, if `size` needs more than
+  // memory_share of the available memory. Collective: rank 0 decides.
+  void check_problem_size(const ProblemSize &size, const std::string &entries);
+} // namespace penny

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Usage: bad_input_generated.sh PENNY CASE EXPECTED
+# Bad input too large or too bound to its own path to ship as a file, written
+# here and checked by bad_input.sh:
+#   self-include  a parameter file that includes itself (by its absolute path)
+#   huge-value    a 100 MB value, which the message must not echo whole
+set -eu
+penny=$1 case=$2 expected=$3
+here=$(cd "$(dirname "$0")" && pwd)
+folder=$(mktemp -d)
+trap 'rm -rf "$folder"' EXIT
+prm=$folder/$case.prm
+printf 'subsection Output\n  set Directory = out\nend\n' > "$prm"
+case $case in
+  self-include)
+    echo "include $prm" >> "$prm"
+    ;;
+  huge-value)
+    /usr/bin/python3 -c "
+import sys
+with open(sys.argv[1], 'a') as prm:
+    prm.write('subsection Material\n  set Young\'s modulus E = ' + '9' * 100000000 + '\nend\n')
+" "$prm"
+    ;;
+esac
+"$here/bad_input.sh" "$penny" "$prm" "$expected"

@@ -1,0 +1,98 @@
+// The size of a model known before it is built, against the meshes and
+// systems actually built: the quadtree's cells from the parameters, and the
+// degrees of freedom and matrix entries from the cells.
+#define BOOST_TEST_MODULE problem_size
+#define BOOST_TEST_NO_MAIN
+#include "fe/penny_gap_mesh.h"
+#include "fe/penny_gap_model.h"
+#include "fe/problem_size.h"
+#include "input/input_error.h"
+#include "test_support.h"
+
+#include <boost/test/unit_test.hpp>
+
+#include <iostream>
+
+using namespace penny;
+
+namespace
+{
+  struct Case
+  {
+    unsigned int tip_levels;
+    double       grading_distance;
+    double       R_over_c, H_over_c;
+    double       aspect_ratio;
+    unsigned int global_refinements;
+  };
+
+  PennyGapModelParameters model_of(const Case &c, const unsigned int degree)
+  {
+    PennyGapModelParameters model = test_size_model(c.tip_levels, degree);
+    model.mesh.grading_distance   = c.grading_distance;
+    model.mesh.cell_aspect_ratio  = c.aspect_ratio;
+    model.mesh.global_refinements = c.global_refinements;
+    model.geometry.gap_radius     = 0.3;
+    model.geometry.domain_radius  = c.R_over_c * 0.3;
+    model.geometry.domain_height  = c.H_over_c * 0.3;
+    return model;
+  }
+
+  const std::vector<Case> cases = {
+      {30, 2, 1000, 1000, 1, 0}, {12, 2, 1000, 1000, 1, 2}, {20, 0.5, 10, 10, 1, 0},
+      {20, 5, 1000, 3, 1, 0},    {8, 10, 50, 2000, 1, 1},   {25, 2, 1000, 1000, 10, 0},
+      {40, 2, 1e6, 1e6, 1, 0},   {6, 1.5, 1.5, 0.2, 1, 0},  {30, 3.7, 4000, 100, 100, 0}};
+} // namespace
+
+// Balancing the levels across vertices adds cells the count leaves out: the
+// estimate may be below the mesh by that much, never above it by more than
+// the rounding of the last coarse cells.
+BOOST_AUTO_TEST_CASE(quadtree_cells_against_built_meshes)
+{
+  for (const Case &c : cases)
+    {
+      const PennyGapModelParameters model = model_of(c, 1);
+      dealii::Triangulation<2> triangulation(dealii::Triangulation<2>::limit_level_difference_at_vertices);
+      double                   estimate = 0;
+      make_penny_gap_mesh(triangulation, model.geometry, model.mesh,
+                          [&](const double cells) { estimate = cells; });
+      const double built = triangulation.n_active_cells();
+      BOOST_TEST_MESSAGE("levels " << c.tip_levels << " grading " << c.grading_distance << " R/c "
+                                   << c.R_over_c << " H/c " << c.H_over_c << ": estimate " << estimate
+                                   << ", built " << built);
+      BOOST_TEST(estimate >= 0.85 * built);
+      BOOST_TEST(estimate <= 1.05 * built);
+    }
+}
+
+// Degrees of freedom and matrix entries from the cells, against the system:
+// never much below, and above by at most the share of hanging nodes and
+// constrained rows the estimate assumes.
+BOOST_AUTO_TEST_CASE(dofs_and_matrix_entries_against_built_systems)
+{
+  for (const auto &[c, degree] : std::vector<std::pair<Case, unsigned int>>{
+           {cases[0], 1}, {cases[0], 2}, {cases[0], 4}, {cases[3], 1}, {cases[3], 2}})
+    {
+      dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+      const PennyGapModel gap(model_of(c, degree), timer);
+      const auto         &system = gap.get_system();
+      const ProblemSize   size   = problem_size(system.get_triangulation().n_global_active_cells(), degree,
+                                                LinearSolverParameters::Type::direct, 1);
+      const double        dofs   = system.get_dof_handler().n_dofs();
+      BOOST_TEST_MESSAGE("degree " << degree << ": DoFs estimate " << size.dofs << ", built " << dofs
+                                   << "; matrix entries estimate " << size.matrix_entries << ", built "
+                                   << system.n_matrix_entries());
+      BOOST_TEST(size.dofs >= 0.9 * dofs);
+      BOOST_TEST(size.dofs <= 1.3 * dofs);
+      BOOST_TEST(size.matrix_entries >= 0.9 * system.n_matrix_entries());
+      BOOST_TEST(size.matrix_entries <= 2.0 * system.n_matrix_entries());
+    }
+}
+
+BOOST_AUTO_TEST_CASE(a_model_too_large_is_refused_before_it_is_built)
+{
+  auto model                    = test_size_model(30, 4);
+  model.mesh.global_refinements = 10;
+  dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+  BOOST_CHECK_THROW(PennyGapModel gap(model, timer), InputError);
+}
