@@ -166,8 +166,8 @@ namespace penny
               const double exact_area = noncontact_area(gaps, exact, p_bar);
               table.add_row({hurst, zeta, gaps.adhesion, p_bar, closed, integral, exact_area,
                              linear_law_noncontact_area(adhesionless, p_bar),
-                             persson_contact_area(gaps.adhesion, p_bar), persson_contact_area(0, p_bar), closed > 1,
-                             exact_area > 1});
+                             persson_contact_area(gaps.adhesion, p_bar), persson_contact_area(0, p_bar),
+                             closed > 1, exact_area > 1});
             }
           summary.add_row({hurst, zeta, gaps.adhesion, gaps.prefactor, linear_law_noncontact_area(gaps, 0),
                            noncontact_area(gaps, exact, 0)});
