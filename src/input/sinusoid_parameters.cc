@@ -32,8 +32,8 @@ namespace penny
     prm.declare_entry("Depth D",
                       "3",
                       Double(0),
-                      "Depth of the solid below the crack plane, free at its far side (the "
-                      "perturbation of the gaps decays like exp(-2 pi z/lambda)); the "
+                      "Depth of the solid from the crack plane z = 0 to its far side z = D, "
+                      "which is free (the perturbation of the gaps decays like exp(-2 pi z/lambda)); the "
                       "periodic-gap-depth scene replaces it by each of 'Depth study/Depths'. "
                       "Units: lambda.");
     prm.declare_entry("Tip refinement levels",
