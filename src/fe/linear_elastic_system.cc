@@ -277,4 +277,5 @@ namespace penny
   }
 
   template class LinearElasticSystem<Axisymmetric>;
+  template class LinearElasticSystem<PlaneStrain>;
 } // namespace penny
