@@ -353,4 +353,5 @@ namespace penny
   }
 
   template class LinearElasticSystem<Axisymmetric>;
+  template class LinearElasticSystem<PlaneStrain>;
 } // namespace penny

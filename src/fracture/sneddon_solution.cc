@@ -167,6 +167,40 @@ namespace penny
       }
   }
 
+  // w(r) = 4/(pi E') int_r^c F(t) t dt/sqrt(t^2 - r^2) with
+  // F(t) = int_0^{pi/2} sin(theta) p(t sin(theta)) dtheta; with t^2 = r^2 + u^2,
+  // t dt/sqrt(t^2 - r^2) = du. The inner quadratures' largest relative error
+  // estimate is added to the outer one's.
+  ClosedForm SneddonSolution::opening(const double r) const
+  {
+    const double P    = load.peak_tension();
+    const double a    = load.tension_radius();
+    const double root = std::sqrt(std::max(c * c - r * r, 0.));
+    switch (load.type())
+      {
+      case FaceLoad::Type::uniform:
+        return {4 * P * root / (pi * e_prime), 0, true};
+      case FaceLoad::Type::parabolic:
+        return {4 * P * root / (pi * e_prime) * (1 - 2 * (c * c + 2 * r * r) / (9 * a * a)), 0, true};
+      default:
+        break;
+      }
+    double     inner_relative_error = 0;
+    const auto inner                = [&](const double u) {
+      const double     t = std::hypot(r, u);
+      const ClosedForm F =
+          integrate([&](const double theta) { return std::sin(theta) * load(t * std::sin(theta)); }, 0,
+                    pi / 2, profile_evaluations);
+      if (F.value != 0)
+        inner_relative_error = std::max(inner_relative_error, F.error_estimate / std::abs(F.value));
+      return F.value;
+    };
+    ClosedForm w = integrate(inner, 0, root, profile_evaluations);
+    w.value *= 4 / (pi * e_prime);
+    w.error_estimate = w.error_estimate * 4 / (pi * e_prime) + inner_relative_error * std::abs(w.value);
+    return w;
+  }
+
   // r dr/sqrt(c^2 - r^2) = c sin(theta) dtheta.
   ClosedForm SneddonSolution::stress_intensity_factor_by_quadrature() const
   {

@@ -36,6 +36,9 @@ namespace penny
     ClosedForm stress_intensity_factor() const;
     ClosedForm opening_at_centre() const;
     ClosedForm gap_volume() const;
+    // The opening w(r) of one face at 0 <= r <= c; for a general load two
+    // nested quadratures, each with at most `profile_evaluations` points.
+    ClosedForm opening(double r) const;
 
     // Always by quadrature, whatever the load.
     ClosedForm stress_intensity_factor_by_quadrature() const;
@@ -43,7 +46,8 @@ namespace penny
     ClosedForm gap_volume_by_quadrature() const;
 
     // The largest number of load evaluations one quadrature makes.
-    static constexpr unsigned int max_evaluations = 100000;
+    static constexpr unsigned int max_evaluations     = 100000;
+    static constexpr unsigned int profile_evaluations = 31 * 7;
 
   private:
     const FaceLoad &load;

@@ -99,7 +99,7 @@ namespace penny
       const Point<2> tip;
     };
 
-    DataOutBase::VtkFlags vtk_flags()
+    DataOutBase::VtkFlags field_vtk_flags()
     {
       DataOutBase::VtkFlags flags;
       flags.write_higher_order_cells = true;
@@ -119,7 +119,7 @@ namespace penny
       {
         std::ostringstream out;
         DataOutBase::write_vtu_main(get_patches(), get_dataset_names(), get_nonscalar_data_ranges(),
-                                    vtk_flags(), out);
+                                    field_vtk_flags(), out);
         return out.str();
       }
     };
@@ -132,7 +132,7 @@ namespace penny
     {
       const std::vector<std::string> pieces = Utilities::MPI::gather(comm, data_out.piece(), 0);
       std::ostringstream             vtu;
-      DataOutBase::write_vtu_header(vtu, vtk_flags());
+      DataOutBase::write_vtu_header(vtu, field_vtk_flags());
       for (const std::string &piece : pieces)
         vtu << piece;
       DataOutBase::write_vtu_footer(vtu);
@@ -210,7 +210,7 @@ namespace penny
       {
         const SneddonSolution exact(load, gap_radius, plane_strain_modulus);
         for (const auto &[r, w] : all)
-          table.add_row({r, r / gap_radius, w, exact.opening(r)});
+          table.add_row({r, r / gap_radius, w, exact.opening(r).value});
       }
     results.write_csv("opening.csv", table);
   }
