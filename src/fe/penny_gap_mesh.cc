@@ -146,10 +146,11 @@ namespace penny
     // .geo that ends in Exit, a crash of gmsh, or gmsh running out of memory
     // (its address space is bounded by what the run may use) ends the child,
     // not penny. Rank 0 meshes; every rank reads the same text.
-    std::string mesh_geo_file(const std::string &geo_file, const GeometryParameters &geometry)
+    std::string mesh_geo_file(const std::string &geo_file, const GeometryParameters &geometry,
+                              const MPI_Comm communicator)
     {
       std::string msh;
-      run_on_rank_zero([&]() {
+      run_on_rank_zero(communicator, [&]() {
         const std::string entry  = "Mesh/Mesh file = " + in_quotes(geo_file);
         std::string       folder = (std::filesystem::temp_directory_path() / "penny-gmsh-XXXXXX").string();
         if (!mkdtemp(folder.data()))
@@ -215,7 +216,7 @@ namespace penny
         if (msh.empty())
           throw InputError(entry + ": gmsh wrote no mesh" + (error.empty() ? "" : ": " + error));
       });
-      return dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, msh, 0);
+      return dealii::Utilities::MPI::broadcast(communicator, msh, 0);
     }
 
     void read_gmsh(Triangulation<2> &triangulation, const GeometryParameters &geometry,
@@ -226,8 +227,9 @@ namespace penny
       try
         {
           // The stream reader takes boundary ids from the physical tags.
-          std::istringstream geo_mesh(is_geo ? mesh_geo_file(mesh.mesh_file, geometry) : "");
-          std::ifstream      msh_file;
+          std::istringstream geo_mesh(
+              is_geo ? mesh_geo_file(mesh.mesh_file, geometry, triangulation.get_communicator()) : "");
+          std::ifstream msh_file;
           if (!is_geo)
             msh_file.open(mesh.mesh_file);
           GridIn<2> grid_in(triangulation);

@@ -49,8 +49,8 @@ namespace penny
         entries << " (R = " << model.geometry.domain_radius / model.geometry.gap_radius
                 << " c, H = " << model.geometry.domain_height / model.geometry.gap_radius << " c)";
       check_problem_size(problem_size(cells, model.degree, model.linear_solver.type,
-                                      Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)),
-                         entries.str());
+                                      Utilities::MPI::n_mpi_processes(model.communicator)),
+                         entries.str(), model.communicator);
     }
 
     // Meshed before the system that distributes its degrees of freedom on it.
@@ -76,7 +76,7 @@ namespace penny
 
   PennyGapModel::PennyGapModel(const PennyGapModelParameters &parameters, TimerOutput &timer)
       : parameters(parameters), timer(timer),
-        triangulation(MPI_COMM_WORLD, Triangulation<2>::limit_level_difference_at_vertices),
+        triangulation(parameters.communicator, Triangulation<2>::limit_level_difference_at_vertices),
         system(meshed(triangulation, parameters, timer), parameters.degree, parameters.material,
                parameters.linear_solver, zero_displacements(parameters.geometry), timer)
   {

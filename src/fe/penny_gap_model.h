@@ -25,6 +25,9 @@ namespace penny
     MeshParameters         mesh;
     unsigned int           degree;
     LinearSolverParameters linear_solver;
+    // The ranks that share the model: all of them, or one alone when a sweep
+    // gives each rank its own solves.
+    MPI_Comm communicator = MPI_COMM_WORLD;
 
     // The same model for a gap of radius c: R/c and H/c kept, so the meshes
     // of a search over c are exactly similar.

@@ -118,10 +118,10 @@ namespace penny
     return pages * sysconf(_SC_PAGESIZE);
   }
 
-  void check_problem_size(const ProblemSize &size, const std::string &entries)
+  void check_problem_size(const ProblemSize &size, const std::string &entries, const MPI_Comm communicator)
   {
     const double budget =
-        dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, memory_share * available_memory(), 0);
+        dealii::Utilities::MPI::broadcast(communicator, memory_share * available_memory(), 0);
     if (size.bytes <= budget)
       return;
     const auto gib = [](const double bytes) {

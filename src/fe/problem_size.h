@@ -8,6 +8,8 @@
 
 #include "input/fe_parameters.h"
 
+#include <mpi.h>
+
 #include <string>
 
 namespace penny
@@ -39,5 +41,5 @@ namespace penny
 
   // Throws InputError, naming `entries`, if `size` needs more than
   // memory_share of the available memory. Collective: rank 0 decides.
-  void check_problem_size(const ProblemSize &size, const std::string &entries);
+  void check_problem_size(const ProblemSize &size, const std::string &entries, MPI_Comm communicator);
 } // namespace penny

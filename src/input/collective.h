@@ -12,14 +12,14 @@
 
 namespace penny
 {
-  // Runs `action` on rank 0 of MPI_COMM_WORLD; the message of an exception it
+  // Runs `action` on rank 0 of `communicator`; the message of an exception it
   // throws reaches every rank, where it is thrown again (as InputError if it
   // was one). Collective.
-  template <typename Action> void run_on_rank_zero(Action &&action)
+  template <typename Action> void run_on_rank_zero(const MPI_Comm communicator, Action &&action)
   {
     std::string message;
     bool        input_error = false;
-    if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
       try
         {
           action();
@@ -35,8 +35,8 @@ namespace penny
           if (message.empty())
             message = "unknown failure";
         }
-    message     = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, message, 0);
-    input_error = dealii::Utilities::MPI::broadcast(MPI_COMM_WORLD, input_error, 0);
+    message     = dealii::Utilities::MPI::broadcast(communicator, message, 0);
+    input_error = dealii::Utilities::MPI::broadcast(communicator, input_error, 0);
     if (message.empty())
       return;
     if (input_error)

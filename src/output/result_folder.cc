@@ -86,7 +86,7 @@ namespace penny
   ResultFolder::ResultFolder(const fs::path &directory, const std::vector<fs::path> &input_files)
       : final_directory(directory)
   {
-    run_on_rank_zero([&]() {
+    run_on_rank_zero(MPI_COMM_WORLD, [&]() {
       try
         {
           prepare(input_files);
@@ -201,8 +201,9 @@ namespace penny
 
   void ResultFolder::write(const std::string &file, const std::string &contents) const
   {
-    run_on_rank_zero(
-        [&]() { write_file(staging_directory / file, contents, (final_directory / file).string()); });
+    run_on_rank_zero(MPI_COMM_WORLD, [&]() {
+      write_file(staging_directory / file, contents, (final_directory / file).string());
+    });
   }
 
   void ResultFolder::write_csv(const std::string &file, const Table &table) const
@@ -215,7 +216,7 @@ namespace penny
   // RENAME_EXCHANGE), the swap reaches the disk, and the previous results go.
   void ResultFolder::commit()
   {
-    run_on_rank_zero([&]() {
+    run_on_rank_zero(MPI_COMM_WORLD, [&]() {
       const fs::path    target = folder();
       const std::string name   = final_directory.string();
       const mode_t      mask   = umask(0);

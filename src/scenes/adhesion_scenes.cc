@@ -18,7 +18,7 @@ namespace penny
     // The closing rows of every search: its cost.
     void add_cost(Table &summary, const GapSearch &search)
     {
-      summary.add_row({"FE solves", search.gaps.n_solves()});
+      summary.add_row({"FE solves", search.n_solves()});
       add_phase_times(summary, search.timer);
     }
 
@@ -46,7 +46,7 @@ namespace penny
     add_cost(summary, search);
     report(summary, "Adhesionless gap size: FE K_I(c) = 0 for the parabola P (1 - r^2/a^2)", "gap-size.csv",
            results, log);
-    return {c / a, search.gaps.n_solves()};
+    return {c / a, search.n_solves()};
   }
 
   AdhesiveMinimumResult run_adhesive_minimum_scene(const Parameters &parameters, const ResultFolder &results,
@@ -72,7 +72,7 @@ namespace penny
     add_cost(summary, search);
     report(summary, "Adhesive minimum: min over c of P(c) = [K_Ic + K_2(c)/(2 R_p)] / K_1(c), FE",
            "adhesive-minimum.csv", results, log);
-    return {psi, c_hat, search.gaps.n_solves()};
+    return {psi, c_hat, search.n_solves()};
   }
 
   // p_hat = P/p0 and c_hat = c/c_min, normalised by the closed-form p0 and c_min
@@ -93,12 +93,18 @@ namespace penny
                                {"p_hat exact", digits},
                                {"p_hat linear", digits},
                                {"relative error", digits}});
-    double              worst = 0;
+    const auto          c_hat_at = [&](const unsigned int i) {
+      return range.smallest_c_hat + i * (range.largest_c_hat - range.smallest_c_hat) / (range.n_points - 1);
+    };
+    const std::vector<UnitLoadSifs> sifs =
+        spread_over_ranks<UnitLoadSifs>(range.n_points, [&](const unsigned int i) {
+          return search.gaps.unit_load_sifs(c_hat_at(i) * c_min);
+        });
+    double worst = 0;
     for (unsigned int i = 0; i < range.n_points; ++i)
       {
-        const double c_hat =
-            range.smallest_c_hat + i * (range.largest_c_hat - range.smallest_c_hat) / (range.n_points - 1);
-        const UnitLoadSifs K      = search.gaps.unit_load_sifs(c_hat * c_min);
+        const double       c_hat  = c_hat_at(i);
+        const UnitLoadSifs K      = sifs[i];
         const double       p_fe   = (K_Ic + K.quadratic / (2 * R_p)) / K.uniform / p0;
         const double       exact  = (c_hat * c_hat + 4 / std::sqrt(c_hat)) / 5;
         const double       linear = c_hat * c_hat > 2.5 ? c_hat * c_hat / 5 + 0.5 : 1.;

@@ -68,8 +68,8 @@ namespace penny
       double worst = std::max(relative_error(solved.opening_at_centre, solved.exact_opening_at_centre.value),
                               relative_error(solved.gap_volume, solved.exact_gap_volume.value));
       for (const auto &ring : solved.rings)
-        worst = std::max(
-            worst, relative_error(ring.signed_stress_intensity_factor, solved.exact_stress_intensity_factor.value));
+        worst = std::max(worst, relative_error(ring.signed_stress_intensity_factor,
+                                               solved.exact_stress_intensity_factor.value));
       return verdict("largest relative error of K_I, w(0) and the volume", worst,
                      parameters.verification->tolerance);
     }
