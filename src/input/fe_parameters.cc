@@ -219,7 +219,7 @@ namespace penny
   void FiniteElementParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Finite element");
-    prm.declare_entry("Polynomial degree", "4", Integer(1, 4),
+    prm.declare_entry("Polynomial degree", "4", Integer(1, 8),
                       "Degree of the continuous Lagrange elements for (u_r, u_z). Units: none.");
     prm.leave_subsection();
   }

@@ -215,6 +215,7 @@ namespace penny
   void declare_scene(ParameterHandler &prm, const Scene &scene)
   {
     Parameters::declare(prm, scene_names(), scene_documentation(), scene.sections);
+    prm.set("Scene", scene.name);
   }
 
   SceneFile read_scene_file(const std::string &filename)
