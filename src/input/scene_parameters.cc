@@ -122,7 +122,9 @@ namespace penny
     prm.declare_entry(
         "Tolerance", "1e-6", Double(0),
         "The largest relative error against the closed forms that passes: K_I on every ring, w(0) "
-        "and the gap volume (penny-gap); c/a, psi, p_hat or c_t (the adhesion scenes). A run that "
+        "and the gap volume (penny-gap); c/a, psi, p_hat or c_t (the adhesion scenes); K_I on every "
+        "ring (periodic-gap), p_bar/p* (westergaard-curve, johnson-curves), the critical alpha and "
+        "the jump into contact (jump-into-contact). A run that "
         "misses it prints FAIL and exits with status 1. Units: none.");
     prm.leave_subsection();
   }

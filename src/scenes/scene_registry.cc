@@ -1,6 +1,7 @@
 #include "scenes/scene_registry.h"
 
 #include "fracture/adhesive_gap.h"
+#include "fracture/periodic_array.h"
 #include "input/input_error.h"
 #include "scenes/adhesion_scenes.h"
 #include "scenes/convergence_scene.h"
@@ -127,6 +128,35 @@ namespace penny
         doc += " " + scene.name + ": " + scene.description + ".";
       return doc;
     }
+
+    // K_I (|K_I| and signed) on every ring against the closed form.
+    Verdict periodic_gap_verdict(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+    {
+      const PeriodicGapResults solved = run_periodic_gap_scene(parameters, results, log);
+      double                   worst  = 0;
+      for (const auto &ring : solved.rings)
+        worst = std::max(
+            {worst,
+             relative_error(ring.stress_intensity_factor, std::abs(solved.exact_stress_intensity_factor)),
+             relative_error(ring.signed_stress_intensity_factor, solved.exact_stress_intensity_factor)});
+      return verdict("largest relative error of K_I", worst, parameters.verification->tolerance);
+    }
+
+    template <CurveErrors (*run)(const Parameters &, const ResultFolder &, std::ostream &)>
+    Verdict curve_verdict(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+    {
+      return verdict("largest error of p_bar/p*", run(parameters, results, log).largest_load_error,
+                     parameters.verification->tolerance);
+    }
+
+    Verdict jump_verdict(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+    {
+      const JumpIntoContactResults fe = run_jump_into_contact_scene(parameters, results, log);
+      return verdict(
+          "largest of the relative error of alpha_c and the error of 1 - p_bar_max/p*",
+          std::max(relative_error(fe.critical_alpha, periodic_array::critical_alpha), fe.largest_jump_error),
+          parameters.verification->tolerance);
+    }
   } // namespace
 
   // clang-format off
@@ -162,8 +192,8 @@ namespace penny
         "one FE solve of a gap of the sinusoid's periodic array (plane strain): K_I from J-integrals and the "
         "signed K_I on every ring, beside sqrt(lambda) [p* cos^2(pi c/lambda) - p_bar] sqrt(tan(pi "
         "c/lambda))",
-        periodic_and({ S::gap_and_load }),
-        without_verdict(run_periodic_gap_scene) },
+        periodic_and({ S::gap_and_load, S::verification }),
+        periodic_gap_verdict },
       { "periodic-gap-depth",
         "the periodic-gap K_I against the depth D/lambda of the truncated solid: the truncation study",
         periodic_and({ S::gap_and_load, S::depth_study }),
@@ -171,19 +201,19 @@ namespace penny
       { "westergaard-curve",
         "the adhesionless sinusoid: contact half-width a from FE roots of K_I = 0 beside "
         "p_bar/p* = sin^2(pi a/lambda)",
-        periodic_and({ S::westergaard_curve }),
-        without_verdict(run_westergaard_curve_scene) },
+        periodic_and({ S::westergaard_curve, S::verification }),
+        curve_verdict<run_westergaard_curve_scene> },
       { "johnson-curves",
         "Johnson's adhesive curves p_bar/p*(a/lambda) from FE roots of K_I = K_Ic beside the closed form "
         "(paper Fig. 1 from FE)",
-        periodic_and({ S::johnson_curves }),
-        without_verdict(run_johnson_curves_scene) },
+        periodic_and({ S::johnson_curves, S::verification }),
+        curve_verdict<run_johnson_curves_scene> },
       { "jump-into-contact",
         "from FE: the critical alpha of spontaneous full contact at zero load, and the jump-into-contact "
         "load "
         "1 - p_bar_max/p* against alpha beside 5 (alpha/4)^(4/5)",
-        periodic_and({ S::jump_into_contact }),
-        without_verdict(run_jump_into_contact_scene) },
+        periodic_and({ S::jump_into_contact, S::verification }),
+        jump_verdict },
       {"zero-load-gap-area",
        "A_nc/A_0 at zero mean pressure against p0/sqrt(V) (paper Fig. 3)",
        {S::material, S::adhesion, S::roughness, S::area_load, S::zero_load_gap_area, S::output},

@@ -58,7 +58,7 @@ namespace penny
     void add_cost(Table &summary, const PeriodicSearch &search)
     {
       summary.add_row({"FE solves", search.gaps.n_solves()});
-      summary.add_row({"wall time (s)", Table::Cell(total_wall_time(search.timer), Table::Format{3, false})});
+      add_phase_times(summary, search.timer);
     }
 
     Table ring_table(const PeriodicGapResults &results)
@@ -105,9 +105,7 @@ namespace penny
       row("K_I of 1 Pa uniform, Koiter (Pa m^1/2)", results.exact_uniform_sif, digits);
       row("K_I of 1 Pa uniform relative error",
           relative_error(results.uniform_sif, results.exact_uniform_sif), error_digits);
-      for (const auto &[phase, seconds] : timer.get_summary_data(TimerOutput::total_wall_time))
-        row("wall time " + phase + " (s)", seconds, Table::Format{3, false});
-      row("wall time (s)", total_wall_time(timer), Table::Format{3, false});
+      add_phase_times(summary, timer);
       return summary;
     }
   } // namespace
@@ -225,7 +223,7 @@ namespace penny
         << ", p_bar/p* = " << parameters.gap_and_load->load_ratio
         << ", last ring) against the depth D of the solid, free at z = D\n";
     table.print(log);
-    log << "wall time (s): " << total_wall_time(timer) << '\n';
+    log << "wall time total (s): " << total_wall_time(timer) << '\n';
     results.write_csv("depth-study.csv", table);
     return rows;
   }
