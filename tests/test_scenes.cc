@@ -2,6 +2,7 @@
 // at the centre and the gap volume within 1e-4 of Sneddon's closed forms.
 #define BOOST_TEST_MODULE scenes
 #define BOOST_TEST_NO_MAIN
+#include "output/table.h"
 #include "scenes/penny_gap_scene.h"
 #include "test_support.h"
 
@@ -116,4 +117,13 @@ BOOST_AUTO_TEST_CASE(scene_writes_its_results_as_a_set)
   for (const char *file : {"rings.csv", "summary.csv", "solution.vtu", "solution.pvd"})
     BOOST_TEST(std::filesystem::is_regular_file(directory / file), file);
   BOOST_TEST(log.str().find("|K_I| relative error") != std::string::npos);
+}
+
+// CSV cells and column names holding a comma or a quote are quoted (RFC 4180),
+// so that a reader finds as many fields in every line as there are columns.
+BOOST_AUTO_TEST_CASE(csv_quotes_commas_and_quotes)
+{
+  Table table({{"ring (min(c, lambda/2 - c))"}, {"note"}});
+  table.add_row({0.25, "a \"b\", c"});
+  BOOST_TEST(table.csv() == "\"ring (min(c, lambda/2 - c))\",note\n0.25,\"a \"\"b\"\", c\"\n");
 }

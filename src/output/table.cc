@@ -96,7 +96,7 @@ namespace penny
   {
     std::ostringstream out;
     for (std::size_t j = 0; j < columns.size(); ++j)
-      out << (j > 0 ? "," : "") << columns[j].name;
+      out << (j > 0 ? "," : "") << csv_text(Table::Cell(columns[j].name));
     out << '\n';
     for (const auto &row : rows)
       {
