@@ -5,6 +5,7 @@
 #include <deal.II/base/mpi.h>
 
 #include <chrono>
+#include <cstdlib>
 #include <exception>
 #include <fcntl.h>
 #include <iomanip>
@@ -100,6 +101,14 @@ int main(int argc, char **argv)
   for (const int descriptor : {STDIN_FILENO, STDOUT_FILENO, STDERR_FILENO})
     if (fcntl(descriptor, F_GETFD) == -1)
       open("/dev/null", descriptor == STDIN_FILENO ? O_RDONLY : O_WRONLY);
+
+  // Open MPI's start-up, cut to what one machine needs (a user's own setting
+  // wins): the point-to-point layer ob1, which skips loading the Omni-Path
+  // (psm2) plugin whose initialisation sleeps, and, for a run without mpirun,
+  // no daemon (orted) forked for the single process.
+  setenv("OMPI_MCA_pml", "ob1", 0);
+  if (!std::getenv("OMPI_COMM_WORLD_SIZE"))
+    setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
 
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   MPI_Comm                                 errors;
