@@ -2,6 +2,8 @@
 # Usage: bad_input_generated.sh PENNY CASE EXPECTED
 # Bad input too large or too bound to its own path to ship as a file, written
 # here and checked by bad_input.sh:
+#   include-in-output  an included file inside the output folder, which a run
+#                 would replace
 #   self-include  a parameter file that includes itself (by its absolute path)
 #   huge-value    a 100 MB value, which the message must not echo whole
 set -eu
@@ -12,6 +14,12 @@ trap 'rm -rf "$folder"' EXIT
 prm=$folder/$case.prm
 printf 'subsection Output\n  set Directory = out\nend\n' > "$prm"
 case $case in
+  include-in-output)
+    mkdir "$folder/results"
+    touch "$folder/results/.penny-results"
+    printf 'subsection Output\n  set Directory = %s/results\nend\n' "$folder" > "$folder/results/inc.prm"
+    echo "include $folder/results/inc.prm" > "$prm"
+    ;;
   self-include)
     echo "include $prm" >> "$prm"
     ;;

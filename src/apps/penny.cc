@@ -118,6 +118,9 @@ int main(int argc, char **argv)
   const bool    speaks = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   std::ostream  silent(nullptr);
   std::ostream &log = speaks ? std::cout : silent;
+  // Each line reaches a file or a pipe as it is printed, as on a terminal:
+  // progress lines, and what a killed run had printed.
+  std::cout << std::unitbuf;
   try
     {
       if (stdout_closed)

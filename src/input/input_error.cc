@@ -56,6 +56,9 @@ namespace penny
       {
         if (ch == '\n' || ch == '\r' || ch == '\t')
           ch = ' ';
+        // Other control characters (a terminal's escape sequences) are not echoed.
+        else if (static_cast<unsigned char>(ch) < 0x20 || ch == 0x7f)
+          ch = '?';
         if (!(ch == ' ' && (collapsed.empty() || collapsed.back() == ' ')))
           collapsed += ch;
       }

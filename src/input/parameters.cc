@@ -130,10 +130,14 @@ namespace penny
         if (open_files.size() == 16)
           throw InputError("parameter file " + in_quotes(filename) +
                            ": include statements nest deeper than 16 files");
+        // A FIFO, a device or a folder would hang, spin or read as empty.
+        if (!std::filesystem::is_regular_file(filename))
+          throw InputError("parameter file " + in_quotes(filename) + " does not exist or is not a file");
         std::ifstream in(filename);
         if (!in)
-          return; // deal.II's reader names the file it cannot open
+          throw InputError("parameter file " + in_quotes(filename) + " cannot be read");
         open_files.push_back(file);
+        files_read.push_back(filename);
         std::string  line;
         unsigned int number = 0;
         while (std::getline(in, line))
@@ -170,7 +174,13 @@ namespace penny
         open_files.pop_back();
       }
 
+      // The files read, the first one and every file it includes.
+      const std::vector<std::string> &files() const { return files_read; }
+      // Whether any entry was set.
+      bool sets_any() const { return !set_at.empty(); }
+
     private:
+      std::vector<std::string>           files_read;
       std::vector<std::string>           open_files; // the chain of includes being read
       std::vector<std::string>           path;       // subsections entered
       std::map<std::string, std::string> set_at;     // entry -> where it was set
@@ -312,13 +322,21 @@ namespace penny
     return parameters;
   }
 
-  void parse_parameter_file(ParameterHandler &prm, const std::string &filename, const std::string &scene)
+  std::vector<std::string> parse_parameter_file(ParameterHandler &prm, const std::string &filename,
+                                                const std::string &scene)
   {
     if (!std::filesystem::is_regular_file(filename))
       throw InputError("parameter file " + in_quotes(filename) + " does not exist or is not a file");
-    const std::string extension = std::filesystem::path(filename).extension();
+    const std::string        extension = std::filesystem::path(filename).extension();
+    std::vector<std::string> files     = {filename};
+    bool                     sets_any;
     if (extension == ".prm")
-      StatementCheck().check(filename);
+      {
+        StatementCheck statements;
+        statements.check(filename);
+        files    = statements.files();
+        sets_any = statements.sets_any();
+      }
     else if (extension == ".json" || extension == ".xml")
       {
         boost::property_tree::ptree tree;
@@ -338,9 +356,14 @@ namespace penny
                              extension.substr(1) + ": " + one_line(error.what()));
           }
         check_entries(prm, tree, {}, scene);
+        sets_any = !tree.empty();
       }
     else
       throw InputError("parameter file " + in_quotes(filename) + " is neither .prm, .json nor .xml");
+    // An empty file would run the default scene unasked.
+    if (!sets_any)
+      throw InputError("parameter file " + in_quotes(filename) +
+                       " sets no parameter (add 'set Scene = NAME'; 'penny --help' lists the scenes)");
     try
       {
         prm.parse_input(filename);
@@ -360,5 +383,6 @@ namespace penny
                     "' lists what it reads)";
         throw InputError(message);
       }
+    return files;
   }
 } // namespace penny

@@ -93,7 +93,9 @@ namespace penny
 
   // Reads and checks `filename` with `prm`, in which the scene entry and
   // `sections` have been declared. Throws InputError (one line) for any
-  // problem, naming the line of a subsection the scene does not read.
-  void parse_parameter_file(dealii::ParameterHandler &prm, const std::string &filename,
-                            const std::string &scene);
+  // problem, naming the line of a subsection the scene does not read, and
+  // for a file that does not set Scene. Returns the files read: `filename`
+  // and every file it includes.
+  std::vector<std::string> parse_parameter_file(dealii::ParameterHandler &prm, const std::string &filename,
+                                                const std::string &scene);
 } // namespace penny

@@ -53,8 +53,12 @@ namespace penny
     grading_distance = prm.get_double("Grading distance");
     ring_radii       = get_doubles(prm, "Ring radii");
     prm.leave_subsection();
-    require(wavelength > 0, "Periodic gap/Wavelength lambda", wavelength, "(0, inf)");
-    require(depth > 0, "Periodic gap/Depth D", depth, "(0, inf)");
+    // Bounded so that no product the solver forms overflows, and the mesh,
+    // whose coarse cells are at most lambda/4 wide, stays small.
+    require(wavelength >= 1e-30 && wavelength <= 1e30, "Periodic gap/Wavelength lambda", wavelength,
+            "[1e-30, 1e30] m");
+    require(depth > 0 && depth <= 100, "Periodic gap/Depth D", depth, "(0, 100] lambda");
+    require(grading_distance <= 10, "Periodic gap/Grading distance", grading_distance, "[0.5, 10]");
     // min(c, lambda/2 - c) is at most lambda/4: rings below 4 D/lambda stay above z = -D.
     std::ostringstream largest;
     largest << std::min(1., 4 * depth);
@@ -85,8 +89,13 @@ namespace penny
     peak_tension = prm.get_double("Peak tension p*");
     load_ratio   = prm.get_double("Mean pressure p_bar/p*");
     prm.leave_subsection();
-    require(gap_ratio > 0 && gap_ratio < 0.5, "Gap and load/Gap half-width c/lambda", gap_ratio, "(0, 0.5)");
-    require(peak_tension > 0, "Gap and load/Peak tension p*", peak_tension, "(0, inf)");
+    // The tip cells are min(c, lambda/2 - c)/2^levels wide: a gap or a
+    // contact narrower than 1e-6 lambda would need more quadtree levels than a mesh holds.
+    require(gap_ratio >= 1e-6 && gap_ratio <= 0.5 - 1e-6, "Gap and load/Gap half-width c/lambda", gap_ratio,
+            "[1e-6, 0.5 - 1e-6]");
+    require(peak_tension >= 1e-30 && peak_tension <= 1e30, "Gap and load/Peak tension p*", peak_tension,
+            "[1e-30, 1e30] Pa");
+    require(std::abs(load_ratio) <= 1e3, "Gap and load/Mean pressure p_bar/p*", load_ratio, "[-1e3, 1e3]");
   }
 
   void DepthStudyParameters::declare(ParameterHandler &prm)
@@ -104,7 +113,7 @@ namespace penny
     depths = get_doubles(prm, "Depths");
     prm.leave_subsection();
     for (const double depth : depths)
-      require(depth > 0, "Depth study/Depths", depth, "(0, inf)");
+      require(depth > 0 && depth <= 100, "Depth study/Depths", depth, "(0, 100] lambda");
   }
 
   void WestergaardCurveParameters::declare(ParameterHandler &prm)
@@ -162,9 +171,10 @@ namespace penny
     largest_alpha  = prm.get_double("Largest alpha");
     n_alphas       = prm.get_integer("Number of alphas");
     prm.leave_subsection();
-    require(smallest_alpha > 0, "Jump into contact/Smallest alpha", smallest_alpha, "(0, Largest alpha)");
-    require(largest_alpha >= smallest_alpha && largest_alpha <= 0.56, "Jump into contact/Largest alpha",
-            largest_alpha, "[Smallest alpha, 0.56]");
+    require(smallest_alpha >= 1e-8, "Jump into contact/Smallest alpha", smallest_alpha,
+            "[1e-8, Largest alpha)");
+    require(largest_alpha > smallest_alpha && largest_alpha <= 0.56, "Jump into contact/Largest alpha",
+            largest_alpha, "(Smallest alpha, 0.56]");
   }
 
   double JumpIntoContactParameters::alpha(const unsigned int i) const

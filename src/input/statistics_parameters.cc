@@ -106,13 +106,19 @@ namespace penny
     hurst_exponents        = get_doubles(prm, "Hurst exponents");
     magnifications         = get_doubles(prm, "Magnifications");
     prm.leave_subsection();
-    require(largest_mean_pressure > smallest_mean_pressure, "Area-load/Largest mean pressure",
-            largest_mean_pressure, "(Smallest mean pressure, inf)");
+    // Near full contact the gaps are isolated for p_bar of a few sqrt(V); far
+    // beyond, the laws underflow to 0 or overflow.
+    require(std::abs(smallest_mean_pressure) <= 100, "Area-load/Smallest mean pressure",
+            smallest_mean_pressure, "[-100, 100] sqrt(V)");
+    require(largest_mean_pressure > smallest_mean_pressure && largest_mean_pressure <= 100,
+            "Area-load/Largest mean pressure", largest_mean_pressure,
+            "(Smallest mean pressure, 100] sqrt(V)");
     for (const double H : hurst_exponents)
       require(H > 0 && H < 1, "Area-load/Hurst exponents", H, "(0, 1)");
+    // Beyond 1e30 the spectral moments leave the range of a double.
     for (const double zeta : magnifications)
-      require(convention_is_paper ? zeta >= 1 : zeta > 1, "Area-load/Magnifications", zeta,
-              convention_is_paper ? "[1, inf)" : "(1, inf) in the consistent convention");
+      require((convention_is_paper ? zeta >= 1 : zeta > 1) && zeta <= 1e30, "Area-load/Magnifications", zeta,
+              convention_is_paper ? "[1, 1e30]" : "(1, 1e30] in the consistent convention");
   }
 
   void ZeroLoadGapAreaParameters::declare(ParameterHandler &prm)
@@ -168,8 +174,9 @@ namespace penny
     first_fit_magnification = fit[0];
     last_fit_magnification  = fit[1];
     prm.leave_subsection();
-    require(last_fit_magnification > first_fit_magnification && first_fit_magnification > 1,
-            "Magnification scaling/Fit magnifications", last_fit_magnification, "(first > 1, inf)");
+    require(last_fit_magnification > first_fit_magnification && first_fit_magnification > 1 &&
+                last_fit_magnification <= 1e30,
+            "Magnification scaling/Fit magnifications", last_fit_magnification, "(first > 1, 1e30]");
   }
 
   void SinusoidParameters::declare(ParameterHandler &prm)

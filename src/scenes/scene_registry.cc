@@ -262,9 +262,17 @@ namespace penny
 
     ParameterHandler prm;
     declare_scene(prm, scene);
-    parse_parameter_file(prm, filename, scene.name);
-    const std::string  folder = std::filesystem::path(filename).parent_path().string();
-    SceneFile          file{&scene, Parameters::parse(prm, scene.sections, folder), ""};
+    const std::vector<std::string> parameter_files = parse_parameter_file(prm, filename, scene.name);
+    const std::string              folder          = std::filesystem::path(filename).parent_path().string();
+    SceneFile                      file{&scene,
+                   Parameters::parse(prm, scene.sections, folder),
+                   "",
+                   {parameter_files.begin(), parameter_files.end()}};
+    if (file.parameters.mesh && file.parameters.mesh->generator == MeshParameters::Generator::gmsh)
+      file.input_files.push_back(file.parameters.mesh->mesh_file);
+    if (file.parameters.roughness &&
+        file.parameters.roughness->spectrum == RoughnessParameters::Spectrum::file)
+      file.input_files.push_back(file.parameters.roughness->spectrum_file);
     std::ostringstream used;
     prm.print_parameters(used, ParameterHandler::PRM);
     file.used_parameters = used.str();
@@ -276,16 +284,10 @@ namespace penny
   // results as they were. Replacing the folder must not remove an input.
   Verdict run_scene_file(const std::string &filename, std::ostream &log)
   {
-    const SceneFile                    file        = read_scene_file(filename);
-    std::vector<std::filesystem::path> input_files = {filename};
-    if (file.parameters.mesh && file.parameters.mesh->generator == MeshParameters::Generator::gmsh)
-      input_files.push_back(file.parameters.mesh->mesh_file);
-    if (file.parameters.roughness &&
-        file.parameters.roughness->spectrum == RoughnessParameters::Spectrum::file)
-      input_files.push_back(file.parameters.roughness->spectrum_file);
+    const SceneFile file = read_scene_file(filename);
     log << "penny: scene " << file.scene->name << " (" << filename << "): " << file.scene->description
         << "\n\n";
-    ResultFolder  results(file.parameters.output.value().directory, input_files);
+    ResultFolder  results(file.parameters.output.value().directory, file.input_files);
     const Verdict verdict = file.scene->run(file.parameters, results, log);
     results.write("parameters.prm", file.used_parameters);
     results.commit();

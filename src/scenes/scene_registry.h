@@ -41,6 +41,9 @@ namespace penny
     const Scene *scene;
     Parameters   parameters;
     std::string  used_parameters; // the parameters of the run, as a .prm file
+    // Every file the run reads: parameter files (the scene file and those it
+    // includes), a mesh, a spectrum. Replacing the output folder must not remove one.
+    std::vector<std::filesystem::path> input_files;
   };
   SceneFile read_scene_file(const std::string &filename);
 
