@@ -30,24 +30,6 @@ namespace
   }
 } // namespace
 
-BOOST_AUTO_TEST_CASE(westergaard_closed_form)
-{
-  // The pressure integrates to p_bar over a period and is the full-contact
-  // pressure at p_bar = p*.
-  for (const double ratio : {0.1, 0.5, 0.9})
-    {
-      const double a    = periodic_array::westergaard_contact_ratio(ratio);
-      double       mean = 0;
-      const int    n    = 200000;
-      for (int k = 0; k < n; ++k)
-        mean += periodic_array::westergaard_pressure(-0.5 + (k + 0.5) / n, ratio) / n;
-      BOOST_TEST(mean == ratio, tt::tolerance(1e-6));
-      BOOST_TEST(std::pow(std::sin(M_PI * a), 2) == ratio, tt::tolerance(1e-14));
-    }
-  BOOST_TEST(periodic_array::westergaard_pressure(0.2, 1) == 1 + std::cos(2 * M_PI * 0.2),
-             tt::tolerance(1e-14));
-}
-
 BOOST_AUTO_TEST_CASE(westergaard_sinusoid_at_256_points)
 {
   // n = 256, dx = lambda/256. The half-width from the gap beside the edge is

@@ -47,10 +47,29 @@ namespace penny
     {
       const double points_per_shortest_wavelength = surfaces.n_points / (surfaces.period * zeta);
       if (points_per_shortest_wavelength < 4)
-        throw InputError("Random surfaces/Grid points per side = " + std::to_string(surfaces.n_points) +
-                         " leaves " + std::to_string(points_per_shortest_wavelength) +
-                         " points per shortest wavelength lambda0/zeta; at least 4 are needed");
+        {
+          std::ostringstream message;
+          message << "Random surfaces/Grid points per side = " << surfaces.n_points << " leaves "
+                  << points_per_shortest_wavelength
+                  << " points per shortest wavelength lambda0/zeta; at least 4 are needed";
+          throw InputError(message.str());
+        }
       return square_grid(surfaces.n_points, surfaces.period * 2 * M_PI / q0);
+    }
+
+    // The least-squares slope of y against x.
+    double fitted_slope(const std::vector<double> &x, const std::vector<double> &y)
+    {
+      const double n  = x.size();
+      double       sx = 0, sy = 0, sxx = 0, sxy = 0;
+      for (std::size_t i = 0; i < x.size(); ++i)
+        {
+          sx += x[i];
+          sy += y[i];
+          sxx += x[i] * x[i];
+          sxy += x[i] * y[i];
+        }
+      return (n * sxy - sx * sy) / (n * sxx - sx * sx);
     }
 
     int n_ranks()
@@ -58,11 +77,12 @@ namespace penny
       return dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
     }
 
-    std::string convention_ratio(const double value, const double reference)
+    // A number to 3 digits, as text.
+    std::string three_digits(const double value)
     {
       std::ostringstream text;
       text.precision(3);
-      text << value / reference;
+      text << value;
       return text.str();
     }
   } // namespace
@@ -239,23 +259,22 @@ namespace penny
   Verdict run_bem_westergaard_scene(const Parameters &parameters, const ResultFolder &results,
                                     std::ostream &log)
   {
-    const auto         &bem    = *parameters.bem_westergaard;
-    const double        lambda = bem.wavelength;
-    const double        E_star = parameters.material->plane_strain_modulus();
-    const double        p_star = M_PI * E_star * bem.amplitude / lambda;
-    Table               table({{"points per lambda"},
-                               {"p_bar/p*"},
-                               {"a/lambda exact", {8}},
-                               {"a/lambda BEM", {8}},
-                               {"|a error|/lambda", error_digits},
-                               {"rate", {3}},
-                               {"|a error|/lambda contact points", error_digits},
-                               {"max |p error|/p* inside", error_digits},
-                               {"pressure rate", {3}},
-                               {"iterations"},
-                               {"wall time (s)", {3}}});
-    std::vector<double> previous_error(bem.load_ratios.size()),
-        previous_pressure_error(bem.load_ratios.size());
+    const auto  &bem    = *parameters.bem_westergaard;
+    const double lambda = bem.wavelength;
+    const double E_star = parameters.material->plane_strain_modulus();
+    const double p_star = M_PI * E_star * bem.amplitude / lambda;
+    Table        table({{"points per lambda"},
+                        {"p_bar/p*"},
+                        {"a/lambda exact", {8}},
+                        {"a/lambda BEM", {8}},
+                        {"|a error|/lambda", error_digits},
+                        {"|a error|/lambda contact points", error_digits},
+                        {"max |p error|/p* inside", error_digits},
+                        {"iterations"},
+                        {"wall time (s)", {3}}});
+    // Per load: log N and the logs of both errors, for the fitted rates.
+    std::vector<std::vector<double>> log_n(bem.load_ratios.size()), log_error(bem.load_ratios.size()),
+        log_pressure_error(bem.load_ratios.size());
     double worst_at_finest = 0;
     for (std::size_t g = 0; g < bem.grid_sizes.size(); ++g)
       {
@@ -294,25 +313,31 @@ namespace penny
                       std::max(pressure_error, std::abs(solution.pressure[i * grid.ny] / p_star -
                                                         periodic_array::westergaard_pressure(s, ratio)));
               }
-            const double step = std::log(double(n) / (g > 0 ? bem.grid_sizes[g - 1] : 1));
-            table.add_row({n, ratio, exact, half_width, error,
-                           g > 0 ? Table::Cell(std::log(previous_error[l] / error) / step) : Table::Cell(""),
-                           coarse, pressure_error,
-                           g > 0 ? Table::Cell(std::log(previous_pressure_error[l] / pressure_error) / step)
-                                 : Table::Cell(""),
-                           solution.iterations, timer.wall_time()});
-            previous_error[l]          = error;
-            previous_pressure_error[l] = pressure_error;
+            table.add_row({n, ratio, exact, half_width, error, coarse, pressure_error, solution.iterations,
+                           timer.wall_time()});
+            log_n[l].push_back(std::log(n));
+            log_error[l].push_back(std::log(error));
+            log_pressure_error[l].push_back(std::log(pressure_error));
             if (g + 1 == bem.grid_sizes.size())
               worst_at_finest = std::max(worst_at_finest, error);
           }
       }
+    // The rate r of error ~ N^-r: least squares over all grids (the sub-grid
+    // half-width error does not fall monotonically from one grid to the next).
+    Table rates({{"p_bar/p*"}, {"half-width rate", {3}}, {"pressure rate", {3}}});
+    for (std::size_t l = 0; l < bem.load_ratios.size(); ++l)
+      rates.add_row({bem.load_ratios[l], -fitted_slope(log_n[l], log_error[l]),
+                     -fitted_slope(log_n[l], log_pressure_error[l])});
     results.write_csv("bem-westergaard.csv", table);
+    results.write_csv("bem-westergaard-rates.csv", rates);
     log << "FFT boundary elements on Westergaard's sinusoid h = 2 h0 sin^2(pi x/lambda): contact half-width "
            "(sub-grid, from the gap beside the edge; and from the contact points alone) and pressure against "
            "p_bar/p* = sin^2(pi a/lambda)\n";
     table.print(log);
-    log << "Table: " << results.directory().string() << "/bem-westergaard.csv\n";
+    log << "Rates r of error ~ N^-r, least squares over the grids:\n";
+    rates.print(log);
+    log << "Tables: bem-westergaard.csv, bem-westergaard-rates.csv in " << results.directory().string()
+        << "/\n";
 
     std::ostringstream message;
     message.precision(2);
@@ -396,13 +421,12 @@ namespace penny
     Table summary = Table::summary();
     summary.add_row({"realisations", surfaces.n_realisations});
     summary.add_row({"grid", std::to_string(grid.nx) + "^2"});
-    summary.add_row({"H, zeta", std::to_string(roughness.hurst) + ", " + std::to_string(roughness.zeta)});
+    summary.add_row({"H, zeta", three_digits(roughness.hurst) + ", " + three_digits(roughness.zeta)});
     summary.add_row({"MPI ranks", n_ranks()});
     summary.add_row({"wall time (s)", Table::Cell(wall_time, Table::Format{4})});
     summary.add_row({"sqrt(V) sampled lattice (Pa)", sqrt_V});
-    summary.add_row({"sqrt(V) paper/consistent/lattice", convention_ratio(laws[0].sqrt_V, sqrt_V) + " / " +
-                                                             convention_ratio(laws[1].sqrt_V, sqrt_V) +
-                                                             " / 1"});
+    summary.add_row({"sqrt(V) paper/consistent/lattice", three_digits(laws[0].sqrt_V / sqrt_V) + " / " +
+                                                             three_digits(laws[1].sqrt_V / sqrt_V) + " / 1"});
     summary.add_row({"prefactor 3 pi R_p eta sqrt(V) paper", laws[0].gaps.prefactor});
     summary.add_row({"prefactor 3 pi R_p eta sqrt(V) consistent", laws[1].gaps.prefactor});
     results.write_csv("random-contact-summary.csv", summary);
