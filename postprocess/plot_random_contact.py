@@ -30,8 +30,9 @@ for column, style in (("linear law paper", "--"), ("linear law consistent", "-")
 axes.set_yscale("log")
 axes.set_xlabel(r"mean pressure $\bar p/\sqrt{V}$")
 axes.set_ylabel(r"non-contact area $A_{nc}/A_0$")
-axes.set_title(f"{int(summary['realisations'])} realisations on {summary['grid']} grids, "
-               f"H, zeta = {summary['H, zeta']}", fontsize=9)
+surface = (f"H, zeta = {summary['H, zeta']}" if "H, zeta" in summary
+           else f"spectrum file {summary['spectrum file']}")
+axes.set_title(f"{int(summary['realisations'])} realisations on {summary['grid']} grids, {surface}", fontsize=9)
 axes.legend(fontsize=8)
 figure.tight_layout()
 figure.savefig(folder / "random-contact.png", dpi=150)

@@ -41,10 +41,11 @@ namespace penny
       return std::abs(value - expected) / standard_error;
     }
 
-    // The square grid of the Random surfaces section for the power law with
-    // cut-off q0 and magnification zeta; its shortest wavelength must span 4 points.
-    PeriodicGrid surface_grid(const RandomSurfaceParameters &surfaces, const double q0, const double zeta)
+    // The square grid of the Random surfaces section for a spectrum on
+    // q0 <= q <= zeta q0: side L = period 2 pi/q0; its shortest wavelength must span 4 points.
+    PeriodicGrid surface_grid(const RandomSurfaceParameters &surfaces, const PowerSpectrum &spectrum)
     {
+      const double q0 = spectrum.wavenumbers.front(), zeta = spectrum.wavenumbers.back() / q0;
       const double points_per_shortest_wavelength = surfaces.n_points / (surfaces.period * zeta);
       if (points_per_shortest_wavelength < 4)
         {
@@ -145,11 +146,14 @@ namespace penny
                            {"mean curvature std error (Pa/m^2)"},
                            {"mean curvature Kac-Rice at bin centre (Pa/m^2)"}});
     double        worst = 0;
+    if (roughness.spectrum == RoughnessParameters::Spectrum::file)
+      throw InputError("Roughness/Spectrum = file: summit-statistics samples the power laws of its 'Hurst "
+                       "exponents' and 'Magnifications'; set Spectrum = power-law");
     for (const double hurst : settings.hurst_exponents)
       for (const double zeta : settings.magnifications)
         {
           const PowerSpectrum spectrum = power_law_spectrum(hurst, roughness.q0, zeta, roughness.amplitude);
-          const PeriodicGrid  grid     = surface_grid(surfaces, roughness.q0, zeta);
+          const PeriodicGrid  grid     = surface_grid(surfaces, spectrum);
           const FourierTransform transform(grid);
           const LatticeMoments   height_lattice = lattice_moments(grid, spectrum);
           const LatticeMoments pressure_lattice = lattice_moments(grid, pressure_spectrum(spectrum, E_star));
@@ -351,13 +355,16 @@ namespace penny
   // Per realisation: the non-contact share at every load, then the iterations.
   void run_random_contact_scene(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
   {
-    const auto         &surfaces  = *parameters.random_surfaces;
-    const auto         &settings  = *parameters.random_contact;
-    const auto         &roughness = *parameters.roughness;
-    const double        E_star    = parameters.material->plane_strain_modulus();
+    const auto  &surfaces  = *parameters.random_surfaces;
+    const auto  &settings  = *parameters.random_contact;
+    const auto  &roughness = *parameters.roughness;
+    const double E_star    = parameters.material->plane_strain_modulus();
+    // The Roughness spectrum: the power law or the table of its file.
     const PowerSpectrum spectrum =
-        power_law_spectrum(roughness.hurst, roughness.q0, roughness.zeta, roughness.amplitude);
-    const PeriodicGrid     grid = surface_grid(surfaces, roughness.q0, roughness.zeta);
+        roughness.spectrum == RoughnessParameters::Spectrum::file
+            ? read_power_spectrum(roughness.spectrum_file, "Roughness/Spectrum file")
+            : power_law_spectrum(roughness.hurst, roughness.q0, roughness.zeta, roughness.amplitude);
+    const PeriodicGrid     grid = surface_grid(surfaces, spectrum);
     const FourierTransform transform(grid);
     const FieldMoments     pressure = lattice_moments(grid, pressure_spectrum(spectrum, E_star)).expected;
     const double           sqrt_V   = std::sqrt(pressure.m0);
@@ -421,7 +428,10 @@ namespace penny
     Table summary = Table::summary();
     summary.add_row({"realisations", surfaces.n_realisations});
     summary.add_row({"grid", std::to_string(grid.nx) + "^2"});
-    summary.add_row({"H, zeta", three_digits(roughness.hurst) + ", " + three_digits(roughness.zeta)});
+    if (roughness.spectrum == RoughnessParameters::Spectrum::file)
+      summary.add_row({"spectrum file", roughness.spectrum_file});
+    else
+      summary.add_row({"H, zeta", three_digits(roughness.hurst) + ", " + three_digits(roughness.zeta)});
     summary.add_row({"MPI ranks", n_ranks()});
     summary.add_row({"wall time (s)", Table::Cell(wall_time, Table::Format{4})});
     summary.add_row({"sqrt(V) sampled lattice (Pa)", sqrt_V});
