@@ -1,7 +1,8 @@
 // The closed forms of Johnson's sinusoid as a periodic array of gaps, checked
 // independently: K_I against the periodic-array weight function by
 // quadrature, Johnson's curve and its extremes against numerical extremes,
-// the critical alpha in 50-digit arithmetic, and the small-alpha law.
+// the critical alpha in 50-digit arithmetic, the small-alpha law, and
+// Westergaard's contact pressure.
 #define BOOST_TEST_MODULE periodic_array
 #define BOOST_TEST_NO_MAIN
 #include "fracture/periodic_array.h"
@@ -138,4 +139,22 @@ BOOST_AUTO_TEST_CASE(small_alpha_law)
       BOOST_TEST(deviation < previous);
       previous = deviation;
     }
+}
+
+BOOST_AUTO_TEST_CASE(westergaard_closed_form)
+{
+  // The pressure integrates to p_bar over a period and is the full-contact
+  // pressure at p_bar = p*.
+  for (const double ratio : {0.1, 0.5, 0.9})
+    {
+      const double a    = periodic_array::westergaard_contact_ratio(ratio);
+      double       mean = 0;
+      const int    n    = 200000;
+      for (int k = 0; k < n; ++k)
+        mean += periodic_array::westergaard_pressure(-0.5 + (k + 0.5) / n, ratio) / n;
+      BOOST_TEST(mean == ratio, tt::tolerance(1e-6));
+      BOOST_TEST(std::pow(std::sin(M_PI * a), 2) == ratio, tt::tolerance(1e-14));
+    }
+  BOOST_TEST(periodic_array::westergaard_pressure(0.2, 1) == 1 + std::cos(2 * M_PI * 0.2),
+             tt::tolerance(1e-14));
 }

@@ -49,6 +49,13 @@ namespace penny::periodic_array
     return std::asin(std::sqrt(load_ratio)) / M_PI;
   }
 
+  double westergaard_pressure(const double position, const double load_ratio)
+  {
+    const double a    = westergaard_contact_ratio(load_ratio);
+    const double edge = std::sin(M_PI * a), s = std::sin(M_PI * position);
+    return std::abs(position) < a ? 2 * std::cos(M_PI * position) * std::sqrt(edge * edge - s * s) : 0.;
+  }
+
   double largest_alpha_with_extremes()
   {
     return 25. / 16 * std::pow(0.6, 0.75);

@@ -21,6 +21,11 @@ namespace penny::periodic_array
   // Westergaard's contact half-width a/lambda = arcsin(sqrt(p_bar/p*))/pi, 0 <= p_bar/p* <= 1.
   double westergaard_contact_ratio(double load_ratio);
 
+  // Westergaard's contact pressure p(s)/p* = 2 cos(pi s/lambda) sqrt(sin^2(pi a/lambda) - sin^2(pi s/lambda))
+  // at s/lambda from the centre of the contact strip (zero outside it), for
+  // 0 < p_bar/p* <= 1; it integrates to p_bar lambda over a period.
+  double westergaard_pressure(double position, double load_ratio);
+
   // A stationary point of Johnson's curve.
   struct LoadExtremum
   {

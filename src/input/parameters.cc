@@ -84,6 +84,10 @@ namespace penny
           PENNY_SECTION(westergaard_curve, "Westergaard curve", WestergaardCurveParameters),
           PENNY_SECTION(johnson_curves, "Johnson curves", JohnsonCurvesParameters),
           PENNY_SECTION(jump_into_contact, "Jump into contact", JumpIntoContactParameters),
+          PENNY_SECTION(random_surfaces, "Random surfaces", RandomSurfaceParameters),
+          PENNY_SECTION(summit_statistics, "Summit statistics", SummitStatisticsParameters),
+          PENNY_SECTION(bem_westergaard, "BEM Westergaard", BemWestergaardParameters),
+          PENNY_SECTION(random_contact, "Random contact", RandomContactParameters),
           PENNY_SECTION(fields, "Fields", FieldParameters),
           PENNY_SECTION(output, "Output", OutputParameters)};
       return table;

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "input/fe_parameters.h"
+#include "input/random_surface_parameters.h"
 #include "input/scene_parameters.h"
 #include "input/sinusoid_parameters.h"
 #include "input/statistics_parameters.h"
@@ -43,6 +44,10 @@ namespace penny
     westergaard_curve,
     johnson_curves,
     jump_into_contact,
+    random_surfaces,
+    summit_statistics,
+    bem_westergaard,
+    random_contact,
     fields,
     output
   };
@@ -78,6 +83,10 @@ namespace penny
     std::optional<WestergaardCurveParameters>     westergaard_curve;
     std::optional<JohnsonCurvesParameters>        johnson_curves;
     std::optional<JumpIntoContactParameters>      jump_into_contact;
+    std::optional<RandomSurfaceParameters>        random_surfaces;
+    std::optional<SummitStatisticsParameters>     summit_statistics;
+    std::optional<BemWestergaardParameters>       bem_westergaard;
+    std::optional<RandomContactParameters>        random_contact;
     std::optional<FieldParameters>                fields;
     std::optional<OutputParameters>               output;
 

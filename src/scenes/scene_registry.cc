@@ -7,6 +7,7 @@
 #include "scenes/convergence_scene.h"
 #include "scenes/fe_gap_area_scene.h"
 #include "scenes/penny_gap_scene.h"
+#include "scenes/random_surface_scenes.h"
 #include "scenes/sinusoid_scenes.h"
 #include "scenes/stability_scene.h"
 #include "scenes/statistics_scenes.h"
@@ -229,7 +230,21 @@ namespace penny
        {S::area_load, S::magnification_scaling, S::output}, without_verdict(run_magnification_scaling_scene)},
       {"fe-gap-area",
        "the area-load curve with the FE gap function g beside the closed-form g's",
-       fe_and({S::adhesion, S::area_load, S::fe_gap_area}), without_verdict(run_fe_gap_area_scene)}};
+       fe_and({S::adhesion, S::area_load, S::fe_gap_area}), without_verdict(run_fe_gap_area_scene)},
+      {"summit-statistics",
+       "summits of the full-contact pressure of sampled Gaussian surfaces over realisations: moments, eta, "
+       "summit heights and mean curvature 1/R_p beside the lattice expectation and both conventions",
+       {S::material, S::roughness, S::random_surfaces, S::summit_statistics, S::output},
+       run_summit_statistics_scene},
+      {"bem-westergaard",
+       "the FFT boundary-element contact solver on Westergaard's sinusoid: half-width and pressure against "
+       "grid size",
+       {S::material, S::bem_westergaard, S::output}, run_bem_westergaard_scene},
+      {"random-contact",
+       "A_nc/A_0 of sampled random surfaces by FFT boundary elements against p_bar/sqrt(V), beside the "
+       "isolated-gap law in both conventions and Persson's erfc",
+       {S::material, S::roughness, S::random_surfaces, S::random_contact, S::output},
+       without_verdict(run_random_contact_scene)}};
     return registry;
   }
   // clang-format on

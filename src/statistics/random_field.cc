@@ -1,0 +1,259 @@
+#include "statistics/random_field.h"
+
+#include <fftw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+#include <stdexcept>
+
+namespace penny
+{
+  namespace
+  {
+    // One step of SplitMix64: the golden-ratio increment and its bijective
+    // 64-bit mixing function.
+    std::uint64_t splitmix64(std::uint64_t z)
+    {
+      z += 0x9e3779b97f4a7c15ULL;
+      z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ULL;
+      z = (z ^ (z >> 27)) * 0x94d049bb133111ebULL;
+      return z ^ (z >> 31);
+    }
+
+    // The top 53 bits as a double in [0, 1).
+    double unit_interval(const std::uint64_t bits)
+    {
+      return (bits >> 11) * 0x1.0p-53;
+    }
+
+    // Two independent standard normal numbers keyed on (seed, kx, ky): the
+    // first two outputs of SplitMix64 started at the key, through Box-Muller.
+    std::complex<double> gaussian_pair(const std::uint64_t seed, const int kx, const int ky)
+    {
+      const std::uint64_t key = splitmix64(splitmix64(splitmix64(seed) ^ std::uint64_t(std::int64_t(kx))) ^
+                                           std::uint64_t(std::int64_t(ky)));
+      const double        u1  = unit_interval(splitmix64(key));
+      const double        u2  = unit_interval(splitmix64(key + 0x9e3779b97f4a7c15ULL));
+      const double        r   = std::sqrt(-2 * std::log1p(-u1));
+      return std::polar(r, 2 * M_PI * u2);
+    }
+
+    double mean_square(const GridField &field)
+    {
+      return std::inner_product(field.begin(), field.end(), field.begin(), 0.) / field.size();
+    }
+  } // namespace
+
+  PeriodicGrid square_grid(const unsigned int n, const double length)
+  {
+    return {n, n, length, length};
+  }
+
+  double Wavevector::norm() const
+  {
+    return std::hypot(qx, qy);
+  }
+
+  FourierTransform::FourierTransform(const PeriodicGrid &grid) : grid_(grid)
+  {
+    if (grid.nx == 0 || grid.ny == 0 || !(grid.lx > 0) || !(grid.ly > 0))
+      throw std::invalid_argument("FourierTransform: the grid needs nx, ny >= 1 points and lx, ly > 0");
+    real_buffer    = fftw_alloc_real(grid.n_points());
+    complex_buffer = reinterpret_cast<std::complex<double> *>(fftw_alloc_complex(n_coefficients()));
+    // FFTW_ESTIMATE picks the plan without timing runs: the same algorithm, so
+    // the same rounding, on every rank and in every run.
+    auto *spectrum = reinterpret_cast<fftw_complex *>(complex_buffer);
+    forward_plan   = fftw_plan_dft_r2c_2d(grid.nx, grid.ny, real_buffer, spectrum, FFTW_ESTIMATE);
+    inverse_plan   = fftw_plan_dft_c2r_2d(grid.nx, grid.ny, spectrum, real_buffer, FFTW_ESTIMATE);
+  }
+
+  FourierTransform::~FourierTransform()
+  {
+    fftw_destroy_plan(static_cast<fftw_plan>(forward_plan));
+    fftw_destroy_plan(static_cast<fftw_plan>(inverse_plan));
+    fftw_free(real_buffer);
+    fftw_free(complex_buffer);
+  }
+
+  Wavevector FourierTransform::wavevector(const std::size_t coefficient) const
+  {
+    const unsigned int n_y = grid_.ny / 2 + 1;
+    const unsigned int i = coefficient / n_y, j = coefficient % n_y;
+    const int          kx = i <= grid_.nx / 2 ? int(i) : int(i) - int(grid_.nx);
+    const int          ky = j;
+    return {kx,
+            ky,
+            2 * M_PI * kx / grid_.lx,
+            2 * M_PI * ky / grid_.ly,
+            grid_.nx % 2 == 0 && i == grid_.nx / 2,
+            grid_.ny % 2 == 0 && j == grid_.ny / 2};
+  }
+
+  FourierTransform::Spectrum FourierTransform::forward(const GridField &field) const
+  {
+    std::copy(field.begin(), field.end(), real_buffer);
+    fftw_execute(static_cast<fftw_plan>(forward_plan));
+    const double scale = 1. / grid_.n_points();
+    Spectrum     coefficients(complex_buffer, complex_buffer + n_coefficients());
+    for (auto &c : coefficients)
+      c *= scale;
+    return coefficients;
+  }
+
+  GridField FourierTransform::inverse(const Spectrum &coefficients) const
+  {
+    std::copy(coefficients.begin(), coefficients.end(), complex_buffer);
+    fftw_execute(static_cast<fftw_plan>(inverse_plan));
+    return GridField(real_buffer, real_buffer + grid_.n_points());
+  }
+
+  FourierTransform::Spectrum
+  FourierTransform::tabulate(const std::function<std::complex<double>(const Wavevector &)> &multiplier) const
+  {
+    Spectrum table(n_coefficients());
+    for (std::size_t c = 0; c < table.size(); ++c)
+      table[c] = multiplier(wavevector(c));
+    return table;
+  }
+
+  void FourierTransform::apply(const Spectrum &multiplier, const GridField &in, GridField &out) const
+  {
+    std::copy(in.begin(), in.end(), real_buffer);
+    fftw_execute(static_cast<fftw_plan>(forward_plan));
+    const double scale = 1. / grid_.n_points();
+    for (std::size_t c = 0; c < multiplier.size(); ++c)
+      complex_buffer[c] *= scale * multiplier[c];
+    fftw_execute(static_cast<fftw_plan>(inverse_plan));
+    out.assign(real_buffer, real_buffer + grid_.n_points());
+  }
+
+  double spectral_density(const PowerSpectrum &spectrum, double q)
+  {
+    const std::vector<double> &q_table = spectrum.wavenumbers;
+    if (q < q_table.front() * (1 - 1e-12) || q > q_table.back() * (1 + 1e-12))
+      return 0;
+    q = std::clamp(q, q_table.front(), q_table.back());
+    const std::size_t i =
+        std::min<std::size_t>(std::upper_bound(q_table.begin(), q_table.end(), q) - q_table.begin(),
+                              q_table.size() - 1) -
+        1;
+    const double slope =
+        std::log(spectrum.densities[i + 1] / spectrum.densities[i]) / std::log(q_table[i + 1] / q_table[i]);
+    return spectrum.densities[i] * std::pow(q / q_table[i], slope);
+  }
+
+  PowerSpectrum pressure_spectrum(const PowerSpectrum &heights, const double E_star)
+  {
+    PowerSpectrum pressure = heights;
+    for (std::size_t i = 0; i < pressure.wavenumbers.size(); ++i)
+      pressure.densities[i] *= E_star * E_star / 4 * std::pow(pressure.wavenumbers[i], 2);
+    return pressure;
+  }
+
+  std::uint64_t realisation_seed(const std::uint64_t seed, const std::uint64_t index)
+  {
+    return splitmix64(splitmix64(seed) ^ index);
+  }
+
+  // Every stored coefficient with ky > 0 stands for one conjugate pair; on the
+  // line ky = 0 both members are stored, and the one with kx < 0 is set to the
+  // conjugate of its partner's draw, so the spectrum is Hermitian by construction.
+  FourierTransform::Spectrum gaussian_spectrum(const FourierTransform &transform,
+                                               const PowerSpectrum &spectrum, const std::uint64_t seed)
+  {
+    const PeriodicGrid        &grid = transform.grid();
+    const double               cell = (2 * M_PI / grid.lx) * (2 * M_PI / grid.ly);
+    FourierTransform::Spectrum coefficients(transform.n_coefficients());
+    for (std::size_t c = 0; c < coefficients.size(); ++c)
+      {
+        const Wavevector q = transform.wavevector(c);
+        if ((q.kx == 0 && q.ky == 0) || q.nyquist_x || q.nyquist_y)
+          continue;
+        const double C = spectral_density(spectrum, q.norm());
+        if (C == 0)
+          continue;
+        const double amplitude = std::sqrt(C * cell / 2);
+        coefficients[c]        = q.ky > 0 || q.kx > 0 ? amplitude * gaussian_pair(seed, q.kx, q.ky)
+                                                      : amplitude * std::conj(gaussian_pair(seed, -q.kx, 0));
+      }
+    return coefficients;
+  }
+
+  GridField gaussian_field(const FourierTransform &transform, const PowerSpectrum &spectrum,
+                           const std::uint64_t seed)
+  {
+    return transform.inverse(gaussian_spectrum(transform, spectrum, seed));
+  }
+
+  std::complex<double> derivative_factor(const Wavevector &q, const unsigned int order_x,
+                                         const unsigned int order_y)
+  {
+    if ((q.nyquist_x && order_x % 2 == 1) || (q.nyquist_y && order_y % 2 == 1))
+      return 0;
+    std::complex<double> factor = 1;
+    for (unsigned int n = 0; n < order_x; ++n)
+      factor *= std::complex<double>(0, q.qx);
+    for (unsigned int n = 0; n < order_y; ++n)
+      factor *= std::complex<double>(0, q.qy);
+    return factor;
+  }
+
+  GridField spectral_derivative(const FourierTransform &transform, const GridField &field,
+                                const unsigned int order_x, const unsigned int order_y)
+  {
+    const auto multiplier =
+        transform.tabulate([=](const Wavevector &q) { return derivative_factor(q, order_x, order_y); });
+    GridField derivative;
+    transform.apply(multiplier, field, derivative);
+    return derivative;
+  }
+
+  GridField full_contact_pressure(const FourierTransform &transform, const GridField &heights,
+                                  const double E_star)
+  {
+    const auto multiplier =
+        transform.tabulate([=](const Wavevector &q) { return std::complex<double>(E_star / 2 * q.norm()); });
+    GridField pressure;
+    transform.apply(multiplier, heights, pressure);
+    return pressure;
+  }
+
+  FieldMoments isotropic_moments(const double m0, const double m2, const double m4)
+  {
+    return {m0, m2, m4, m4 / 3};
+  }
+
+  FieldMoments sampled_moments(const FourierTransform &transform, const GridField &field)
+  {
+    const double mean = std::accumulate(field.begin(), field.end(), 0.) / field.size();
+    return {mean_square(field) - mean * mean, mean_square(spectral_derivative(transform, field, 1, 0)),
+            mean_square(spectral_derivative(transform, field, 2, 0)),
+            mean_square(spectral_derivative(transform, field, 1, 1))};
+  }
+
+  LatticeMoments lattice_moments(const PeriodicGrid &grid, const PowerSpectrum &spectrum)
+  {
+    const FourierTransform transform(grid);
+    const double           cell   = (2 * M_PI / grid.lx) * (2 * M_PI / grid.ly);
+    double                 sum[4] = {0, 0, 0, 0}, sum_of_squares[4] = {0, 0, 0, 0};
+    for (std::size_t c = 0; c < transform.n_coefficients(); ++c)
+      {
+        const Wavevector q = transform.wavevector(c);
+        if ((q.kx == 0 && q.ky == 0) || q.nyquist_x || q.nyquist_y)
+          continue;
+        // A stored coefficient with ky > 0 stands for itself and its conjugate.
+        const double multiplicity = q.ky > 0 ? 2 : 1;
+        const double term         = spectral_density(spectrum, q.norm()) * cell;
+        const double qx2 = q.qx * q.qx, qy2 = q.qy * q.qy;
+        const double terms[4] = {term, term * qx2, term * qx2 * qx2, term * qx2 * qy2};
+        for (int n = 0; n < 4; ++n)
+          {
+            sum[n] += multiplicity * terms[n];
+            sum_of_squares[n] += multiplicity * terms[n] * terms[n];
+          }
+      }
+    const auto deviation = [&](const int n) { return std::sqrt(2 * sum_of_squares[n]); };
+    return {{sum[0], sum[1], sum[2], sum[3]}, {deviation(0), deviation(1), deviation(2), deviation(3)}};
+  }
+} // namespace penny

@@ -1,0 +1,158 @@
+// The FFT boundary-element contact solver: Westergaard's sinusoid (contact
+// half-width and pressure), complementarity on a random surface, full
+// contact, warm-started load sweeps, and errors as exceptions.
+#define BOOST_TEST_MODULE contact_solver
+#define BOOST_TEST_NO_MAIN
+#include "fracture/periodic_array.h"
+#include "statistics/contact_solver.h"
+#include "statistics/roughness.h"
+
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+namespace tt = boost::test_tools;
+using namespace penny;
+
+namespace
+{
+  const double lambda = 1e-3, h0 = 1e-6, E_star = 1e7, p_star = M_PI * E_star * h0 / lambda;
+
+  // h = 2 h0 sin^2(pi x/lambda) on an n x 4 grid of square cells (y-independent).
+  GridField sinusoid(const PeriodicGrid &grid)
+  {
+    GridField h(grid.n_points());
+    for (unsigned int i = 0; i < grid.nx; ++i)
+      for (unsigned int j = 0; j < grid.ny; ++j)
+        h[i * grid.ny + j] = 2 * h0 * std::pow(std::sin(M_PI * i / grid.nx), 2);
+    return h;
+  }
+} // namespace
+
+BOOST_AUTO_TEST_CASE(westergaard_sinusoid_at_256_points)
+{
+  // n = 256, dx = lambda/256. The half-width from the gap beside the edge is
+  // within 0.1 dx (measured: at most 0.05 dx over p_bar/p* = 0.1 ... 0.9);
+  // the pressure more than 0.05 lambda inside the edges within 1e-3 p_bar
+  // (measured: at most 5.4e-4, at p_bar/p* = 0.1).
+  const unsigned int     n = 256;
+  const PeriodicGrid     grid{n, 4, lambda, 4 * lambda / n};
+  const FourierTransform transform(grid);
+  const HalfSpaceContact contact(transform, sinusoid(grid), E_star);
+  const double           dx = lambda / n;
+  for (const double ratio : {0.2, 0.5, 0.8})
+    {
+      const ContactSolution solution = contact.solve(ratio * p_star, {10000, 1e-12});
+      BOOST_TEST(solution.residual <= 1e-12);
+
+      // The strip is centred on the crest x = lambda/2 (i = n/2).
+      unsigned int last = n / 2;
+      while (solution.pressure[(last + 1) * grid.ny] > 0)
+        ++last;
+      std::vector<double> gaps;
+      for (unsigned int k = 1; k <= 8; ++k)
+        gaps.push_back(solution.gap[(last + k) * grid.ny]);
+      const double half_width = (last - n / 2.) * dx + edge_from_gap(gaps) * dx;
+      BOOST_TEST(std::abs(half_width - periodic_array::westergaard_contact_ratio(ratio) * lambda) < 0.1 * dx);
+
+      double error = 0;
+      for (unsigned int i = 0; i < n; ++i)
+        {
+          const double s = double(i) / n - 0.5;
+          if (std::abs(s) < periodic_array::westergaard_contact_ratio(ratio) - 0.05)
+            error = std::max(error, std::abs(solution.pressure[i * grid.ny] -
+                                             p_star * periodic_array::westergaard_pressure(s, ratio)));
+        }
+      BOOST_TEST(error < 1e-3 * ratio * p_star);
+    }
+}
+
+BOOST_AUTO_TEST_CASE(complementarity_on_a_random_surface)
+{
+  // p >= 0, mean p = p_bar, gap >= 0 and p gap = 0 to the solver tolerance:
+  // the residual is the rms of the gap on the contact points and of the
+  // overlap elsewhere (in units of h_rms); pointwise both stay within 10 times
+  // the tolerance (measured: 3.4 times).
+  const PowerSpectrum    spectrum = power_law_spectrum(0.5, 2 * M_PI / lambda, 16, 1e-5);
+  const PeriodicGrid     grid     = square_grid(128, 2 * lambda);
+  const FourierTransform transform(grid);
+  const GridField        h = gaussian_field(transform, spectrum, 3);
+  const HalfSpaceContact contact(transform, h, E_star);
+  const double sqrt_V    = std::sqrt(lattice_moments(grid, pressure_spectrum(spectrum, E_star)).expected.m0);
+  const double tolerance = 1e-10;
+  const ContactSolution solution = contact.solve(sqrt_V, {5000, tolerance});
+
+  double h_mean = 0, h_square = 0, p_mean = 0, largest_violation = 0;
+  for (std::size_t i = 0; i < h.size(); ++i)
+    {
+      h_mean += h[i] / h.size();
+      h_square += h[i] * h[i] / h.size();
+      p_mean += solution.pressure[i] / h.size();
+      BOOST_TEST_REQUIRE(solution.pressure[i] >= 0);
+      largest_violation = std::max(largest_violation,
+                                   solution.pressure[i] > 0 ? std::abs(solution.gap[i]) : -solution.gap[i]);
+    }
+  const double h_rms = std::sqrt(h_square - h_mean * h_mean);
+  BOOST_TEST(p_mean == sqrt_V, tt::tolerance(1e-13));
+  BOOST_TEST(solution.residual <= tolerance);
+  BOOST_TEST(largest_violation <= 10 * tolerance * h_rms);
+  // Near p_bar = sqrt(V) both contact and gaps hold a fair share of the points.
+  BOOST_TEST(solution.contact_fraction > 0.5);
+  BOOST_TEST(solution.contact_fraction < 0.95);
+}
+
+BOOST_AUTO_TEST_CASE(full_contact_is_the_full_contact_pressure)
+{
+  // Above p* the sinusoid is in full contact: p = p_bar + p_fc, no iteration.
+  const PeriodicGrid     grid{64, 4, lambda, 4 * lambda / 64};
+  const FourierTransform transform(grid);
+  const HalfSpaceContact contact(transform, sinusoid(grid), E_star);
+  const ContactSolution  solution = contact.solve(1.5 * p_star, {100, 1e-12});
+  BOOST_TEST(solution.contact_fraction == 1.0);
+  BOOST_TEST(solution.iterations == 0u);
+  for (unsigned int i = 0; i < grid.nx; ++i)
+    BOOST_TEST(solution.pressure[i * grid.ny] == 1.5 * p_star - p_star * std::cos(2 * M_PI * i / grid.nx),
+               tt::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(load_sweep_matches_single_solves)
+{
+  // Warm starts change the path, not the answer: the same non-contact share
+  // to within two grid points, in the order the loads were given.
+  const PowerSpectrum    spectrum = power_law_spectrum(0.75, 2 * M_PI / lambda, 8, 1e-5);
+  const PeriodicGrid     grid     = square_grid(64, 2 * lambda);
+  const FourierTransform transform(grid);
+  const HalfSpaceContact contact(transform, gaussian_field(transform, spectrum, 5), E_star);
+  const double sqrt_V = std::sqrt(lattice_moments(grid, pressure_spectrum(spectrum, E_star)).expected.m0);
+  const std::vector<double>   loads = {1 * sqrt_V, 2 * sqrt_V, 0.5 * sqrt_V};
+  const std::vector<LoadStep> steps = load_sweep(contact, loads, {5000, 1e-10});
+  for (std::size_t k = 0; k < loads.size(); ++k)
+    {
+      BOOST_TEST(steps[k].mean_pressure == loads[k]);
+      const ContactSolution single = contact.solve(loads[k], {5000, 1e-10});
+      BOOST_TEST(std::abs(steps[k].noncontact_fraction - (1 - single.contact_fraction)) <=
+                 2.0 / grid.n_points());
+    }
+  BOOST_TEST(steps[2].noncontact_fraction > steps[0].noncontact_fraction);
+  BOOST_TEST(steps[0].noncontact_fraction > steps[1].noncontact_fraction);
+}
+
+BOOST_AUTO_TEST_CASE(errors_are_exceptions)
+{
+  const PeriodicGrid     grid{64, 4, lambda, 4 * lambda / 64};
+  const FourierTransform transform(grid);
+  const HalfSpaceContact contact(transform, sinusoid(grid), E_star);
+  BOOST_CHECK_EXCEPTION(
+      contact.solve(0.3 * p_star, {2, 1e-14}), std::runtime_error, [](const std::runtime_error &e) {
+        return std::string(e.what()).find("no convergence in 2 iterations") != std::string::npos;
+      });
+  BOOST_CHECK_THROW(contact.solve(-1, {100, 1e-10}), std::invalid_argument);
+  BOOST_CHECK_THROW(contact.solve(p_star, {100, 1e-10}, GridField(3, 1.)), std::invalid_argument);
+  BOOST_CHECK_THROW(HalfSpaceContact(transform, GridField(grid.n_points(), 1.), E_star),
+                    std::invalid_argument);
+  BOOST_CHECK_THROW(HalfSpaceContact(transform, GridField(5, 1.), E_star), std::invalid_argument);
+  GridField with_nan = sinusoid(grid);
+  with_nan[7]        = std::nan("");
+  BOOST_CHECK_THROW(HalfSpaceContact(transform, with_nan, E_star), std::invalid_argument);
+}
