@@ -154,6 +154,7 @@ namespace penny
             if (comment != std::string::npos)
               line.erase(comment);
             const auto [keyword, rest] = statement(line);
+            any_statement              = any_statement || !keyword.empty();
             // Lines of an included file name the file.
             const std::string where =
                 (open_files.size() > 1 ? in_quotes(filename) + ", " : "") + "line " + std::to_string(first);
@@ -180,14 +181,15 @@ namespace penny
 
       // The files read, the first one and every file it includes.
       const std::vector<std::string> &files() const { return files_read; }
-      // Whether any entry was set.
-      bool sets_any() const { return !set_at.empty(); }
+      // Whether the files hold any statement.
+      bool sets_any() const { return any_statement; }
 
     private:
       std::vector<std::string>           files_read;
       std::vector<std::string>           open_files; // the chain of includes being read
       std::vector<std::string>           path;       // subsections entered
       std::map<std::string, std::string> set_at;     // entry -> where it was set
+      bool                               any_statement = false;
     };
 
     // deal.II writes names in XML (and may in JSON) with every character
