@@ -59,9 +59,9 @@ namespace penny
     // The weight is smooth but only C3 at the edge of its support: a few extra points.
     const QGauss<dim>                quadrature(fe.degree + 4);
     const QGauss<dim - 1>            face_quadrature(fe.degree + 4);
-    FEValues<dim>                    fe_values(fe, quadrature,
+    FEValues<dim>                    fe_values(system.get_mapping(), fe, quadrature,
                                                update_values | update_gradients | update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim>                fe_face(fe, face_quadrature,
+    FEFaceValues<dim>                fe_face(system.get_mapping(), fe, face_quadrature,
                                              update_gradients | update_quadrature_points | update_JxW_values);
     const FEValuesExtractors::Vector displacement(0);
     std::vector<Tensor<2, dim>>      grad_u(quadrature.size()), grad_v(quadrature.size());
@@ -121,4 +121,5 @@ namespace penny
   }
 
   template class DomainIntegral<Axisymmetric>;
+  template class DomainIntegral<Solid>;
 } // namespace penny
