@@ -131,3 +131,33 @@ BOOST_AUTO_TEST_CASE(bad_entries)
                       "unequal numbers of 'subsection' and 'end'"));
   BOOST_TEST(mentions(error_of("set Scene penny-gap\n"), "Invalid format of 'set'"));
 }
+
+// The sinusoid's scenes: the shipped periodic gap, the sections each reads,
+// and the checks across entries.
+BOOST_AUTO_TEST_CASE(sinusoid_scenes)
+{
+  const SceneFile file = read_scene_file(TEST_DIR "/../prms/periodic-gap.prm");
+  BOOST_TEST(file.scene->name == "periodic-gap");
+  BOOST_TEST(file.parameters.gap_and_load->gap_ratio == 0.2);
+  BOOST_TEST(file.parameters.periodic_gap->depth == 3.);
+  BOOST_TEST(!file.parameters.geometry.has_value());
+  const std::string johnson = printed_parameters("johnson-curves");
+  BOOST_TEST(mentions(johnson, "subsection Johnson curves"));
+  BOOST_TEST(mentions(johnson, "subsection Periodic gap"));
+  BOOST_TEST(!mentions(johnson, "subsection Gap and load"));
+  BOOST_TEST(!mentions(johnson, "subsection Mesh"));
+
+  BOOST_TEST(mentions(
+      error_of("set Scene = johnson-curves\nsubsection Gap and load\n set Peak tension p* = 1\nend\n"),
+      "line 2: subsection 'Gap and load' is not read by Scene = johnson-curves"));
+  BOOST_TEST(mentions(
+      error_of("set Scene = periodic-gap-depth\nsubsection Depth study\n set Depths = 1, 0.125\nend\n"),
+      "Depth study/Depths = 0.125 is outside the allowed range (largest ring radius/4 = 0.1875, inf)"));
+  BOOST_TEST(
+      mentions(error_of("set Scene = periodic-gap\nsubsection Gap and load\n set Peak tension p* = 0\nend\n"),
+               "Gap and load/Peak tension p* = 0 is outside the allowed range (0, inf)"));
+  BOOST_TEST(
+      mentions(error_of("set Scene = jump-into-contact\nsubsection Jump into contact\n set Smallest alpha = "
+                        "0.25\n set Largest alpha = 0.125\nend\n"),
+               "Jump into contact/Largest alpha = 0.125"));
+}

@@ -1,6 +1,6 @@
 // The statistical layer: PSD moments, summit statistics in both conventions,
 // the aggregation over Gaussian summits against its closed form, the theta
-// fit, Johnson's sinusoid, and the area-load curve with the FE g at test size.
+// fit, and the area-load curve with the FE g at test size.
 #define BOOST_TEST_MODULE statistics
 #define BOOST_TEST_NO_MAIN
 #include "fracture/adhesive_gap.h"
@@ -226,13 +226,6 @@ BOOST_AUTO_TEST_CASE(persson_variant)
   BOOST_TEST(persson_contact_area(1, -1) == 0);
   BOOST_TEST(persson_contact_area(1, -3) == 0);
   BOOST_TEST(persson_contact_area(0.5, 0.5) == std::erf(1 / std::sqrt(2.)), tt::tolerance(1e-15));
-}
-
-BOOST_AUTO_TEST_CASE(johnson_sinusoid)
-{
-  BOOST_TEST(johnson_sinusoid_load(0.1, 0) == std::pow(std::sin(0.1 * M_PI), 2), tt::tolerance(1e-15));
-  BOOST_TEST(johnson_sinusoid_load(0.25, 0.2) == 0.3, tt::tolerance(1e-14));
-  BOOST_TEST(johnson_sinusoid_load(0.5 - 1e-9, 0.2) < -100);
 }
 
 BOOST_AUTO_TEST_CASE(toughness_and_amplitude_parameters)

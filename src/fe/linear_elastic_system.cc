@@ -201,8 +201,6 @@ namespace penny
             // near-null space of the operator: in 3D the six rigid-body
             // motions. (The constant modes of the components miss the three
             // rotations, and CG then needs several times the iterations.)
-            if (std::getenv("TMP_CONSTANT_MODES")) { DoFTools::extract_constant_modes(dof_handler, ComponentMask(), data.constant_modes);
-            amg.initialize(stiffness, data); return; }
             Teuchos::ParameterList              parameters;
             std::unique_ptr<Epetra_MultiVector> unused;
             data.set_parameters(parameters, unused, stiffness);
@@ -211,28 +209,12 @@ namespace penny
             parameters.set("null space: type", "pre-computed");
             parameters.set("null space: dimension", modes.NumVectors());
             parameters.set("null space: vectors", modes.Values());
-            if (const char *extra = std::getenv("TMP_ML"))
-              {
-                std::string spec(extra);
-                std::stringstream ss(spec);
-                std::string item;
-                while (std::getline(ss, item, ','))
-                  {
-                    const auto c1 = item.find('='), c2 = item.find('#');
-                    const std::string key = item.substr(0, c1), type = item.substr(c1 + 1, c2 - c1 - 1), value = item.substr(c2 + 1);
-                    if (type == "i") parameters.set(key, std::stoi(value));
-                    else if (type == "d") parameters.set(key, std::stod(value));
-                    else if (type == "b") parameters.set(key, value == "1");
-                    else parameters.set(key, value);
-                  }
-              }
-            if (std::getenv("TMP_PRINT")) parameters.print(std::cout);
             amg.initialize(stiffness, parameters);
           }
         else
           {
-            // In the axisymmetric model only the translation along z is free
-            // of strain (a radial shift strains the hoop).
+            // In 2D the constant modes of the components (in the
+            // axisymmetric model only the shift along z is free of strain).
             DoFTools::extract_constant_modes(dof_handler, ComponentMask(), data.constant_modes);
             amg.initialize(stiffness, data);
           }
@@ -354,5 +336,6 @@ namespace penny
   }
 
   template class LinearElasticSystem<Axisymmetric>;
+  template class LinearElasticSystem<PlaneStrain>;
   template class LinearElasticSystem<Solid>;
 } // namespace penny

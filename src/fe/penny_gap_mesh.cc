@@ -1,15 +1,14 @@
 #include "fe/penny_gap_mesh.h"
 
 #include "fe/boundary_ids.h"
+#include "fe/tip_graded_mesh.h"
 #include "input/input_error.h"
 
-#include <deal.II/grid/grid_generator.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 
 #include <gmsh.h>
 
-#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -23,37 +22,13 @@ namespace penny
 
   namespace
   {
-    // Distance from point p to the axis-aligned box of a cell (0 inside).
-    double distance_to_cell(const Point<2> &p, const Triangulation<2>::active_cell_iterator &cell)
-    {
-      const BoundingBox<2> box = cell->bounding_box();
-      double               d2  = 0;
-      for (unsigned int i = 0; i < 2; ++i)
-        {
-          const double below = box.lower_bound(i) - p[i];
-          const double above = p[i] - box.upper_bound(i);
-          const double gap   = std::max({below, above, 0.});
-          d2 += gap * gap;
-        }
-      return std::sqrt(d2);
-    }
-
-    // Steps of width `s` filling [0, length >= 2 s]; the remainder widens the
-    // last one, never the first.
-    std::vector<double> coarse_steps(const double length, const double s)
-    {
-      const unsigned int  n = std::max(1u, static_cast<unsigned int>(std::floor(length / s + 1e-12)));
-      std::vector<double> steps(n, s);
-      steps.back() += length - n * s;
-      return steps;
-    }
-
-    // Quadtree of square cells: a coarse grid of width s = c 2^m (the largest such
-    // width not above min(R, H)/2, so that the first coarse cell is [0, s]^2 and
-    // c falls on one of its dyadic vertices), then every
-    // cell nearer to the tip than `grading_distance` of its own widths is split
-    // until the tip cells are c/2^levels wide, and every cell over the gap face
-    // until it is c/2^(gap face levels) wide. Far from the tip cells double in
+    // Quadtree of square cells (fe/tip_graded_mesh.h): a coarse grid of width
+    // s = c 2^m (the largest such width not above min(R, H)/2, so that the first
+    // coarse cell is [0, s]^2 and c falls on one of its dyadic vertices), then
+    // every cell nearer to the tip than `grading_distance` of its own widths is
+    // split until the tip cells are c/2^levels wide, and every cell over the gap
+    // face until it is c/2^(gap face levels) wide: without those, w(0) is 20
+    // times less accurate than K_I. Far from the tip cells double in
     // width every few cells: a geometric grading, ratio 2, out to R and H.
     void generate_quadtree(Triangulation<2> &triangulation, const GeometryParameters &physical_geometry,
                            const MeshParameters &mesh)
@@ -70,39 +45,10 @@ namespace penny
           c *
           std::pow(2.,
                    std::floor(std::log2(std::min(geometry.domain_radius, geometry.domain_height) / (2 * c))));
-      GridGenerator::subdivided_hyper_rectangle(
-          triangulation, {coarse_steps(geometry.domain_radius, s), coarse_steps(geometry.domain_height, s)},
-          Point<2>(0, 0), Point<2>(geometry.domain_radius, geometry.domain_height));
-
-      const Point<2> tip        = crack_tip(geometry);
-      const double   tip_width  = c / std::pow(2., mesh.tip_levels);
-      const double   face_width = c / std::pow(2., mesh.gap_face_levels);
-      while (true)
-        {
-          bool refined = false;
-          for (const auto &cell : triangulation.active_cell_iterators())
-            {
-              const double width = cell->extent_in_direction(0);
-              // Ties (distance exactly a multiple of the width) are common on a
-              // quadtree; the relative margin decides them the same way for
-              // every c, so meshes built for different c are exactly similar.
-              const bool near_tip = width > tip_width * (1 + 1e-9) &&
-                                    distance_to_cell(tip, cell) < mesh.grading_distance * width * (1 - 1e-9);
-              // The cells over the gap face, within c of it, resolve the
-              // opening: without them w(0) is 20 times less accurate than K_I.
-              const bool over_face = width > face_width * (1 + 1e-9) &&
-                                     cell->bounding_box().lower_bound(0) < c * (1 - 1e-9) &&
-                                     cell->bounding_box().lower_bound(1) < c * (1 - 1e-9);
-              if (near_tip || over_face)
-                {
-                  cell->set_refine_flag();
-                  refined = true;
-                }
-            }
-          if (!refined)
-            break;
-          triangulation.execute_coarsening_and_refinement();
-        }
+      const double tip_width = c / std::pow(2., mesh.tip_levels);
+      make_tip_graded_mesh(triangulation, coarse_steps(geometry.domain_radius, s),
+                           coarse_steps(geometry.domain_height, s), crack_tip(geometry),
+                           {tip_width, mesh.grading_distance, c / std::pow(2., mesh.gap_face_levels)});
 
       const double tolerance = 1e-9 * tip_width;
       for (const auto &face : triangulation.active_face_iterators())
@@ -190,27 +136,17 @@ namespace penny
                            std::to_string(id) + " (1 axis, 2 gap face, 3 ligament, 4 far boundary)");
     }
 
-    bool has_vertex_at_tip(const Triangulation<2> &triangulation, const GeometryParameters &geometry)
-    {
-      const Point<2> tip = crack_tip(geometry);
-      return std::any_of(triangulation.get_vertices().begin(), triangulation.get_vertices().end(),
-                         [&](const Point<2> &v) { return v.distance(tip) < 1e-12 * geometry.gap_radius; });
-    }
   } // namespace
 
   void make_penny_gap_mesh(Triangulation<2> &triangulation, const GeometryParameters &geometry,
                            const MeshParameters &mesh)
   {
     if (mesh.generator == MeshParameters::Generator::builtin)
-      {
-        generate_quadtree(triangulation, geometry, mesh);
-        if (!has_vertex_at_tip(triangulation, geometry))
-          throw std::logic_error("mesh: the built-in generator placed no vertex at the crack tip");
-      }
+      generate_quadtree(triangulation, geometry, mesh);
     else
       {
         read_gmsh(triangulation, geometry, mesh);
-        if (!has_vertex_at_tip(triangulation, geometry))
+        if (!has_vertex_at(triangulation, crack_tip(geometry), 1e-12 * geometry.gap_radius))
           throw InputError("Mesh/Mesh file = '" + mesh.mesh_file +
                            "' has no vertex at the crack tip (c, 0) of Geometry/Gap radius c");
       }

@@ -5,9 +5,13 @@
 // measure int_front q.n ds of the extension.
 #pragma once
 
+#include <deal.II/base/bounding_box.h>
 #include <deal.II/base/point.h>
 #include <deal.II/base/tensor.h>
 #include <deal.II/grid/tria.h>
+
+#include <algorithm>
+#include <cmath>
 
 namespace penny
 {
@@ -21,6 +25,12 @@ namespace penny
 
     // False for cells that lie surely outside the support of q.
     virtual bool may_touch(const typename dealii::Triangulation<dim>::cell_iterator &cell) const = 0;
+
+    // True where the edge of the support of q crosses the box of a cell or
+    // face: q is only finitely differentiable across it, and the domain
+    // integral subdivides its quadrature there. Extensions that do not say
+    // get the plain quadrature everywhere.
+    virtual bool edge_crosses(const dealii::BoundingBox<dim> &) const { return false; }
 
     // int_front q.n ds in the volume measure of the model (for the penny, r at
     // the tip: the 2 pi is dropped throughout).
@@ -66,6 +76,19 @@ namespace penny
     bool may_touch(const typename dealii::Triangulation<dim>::cell_iterator &cell) const override
     {
       return cell->center().distance(tip) <= rho + cell->diameter();
+    }
+
+    // The circle d = rho passes between the nearest and the farthest point of the box.
+    bool edge_crosses(const dealii::BoundingBox<dim> &box) const override
+    {
+      double nearest = 0, farthest = 0;
+      for (unsigned int i = 0; i < dim; ++i)
+        {
+          const double below = box.lower_bound(i) - tip[i], above = tip[i] - box.upper_bound(i);
+          nearest += std::pow(std::max({below, above, 0.}), 2);
+          farthest += std::pow(std::max(std::abs(below), std::abs(above)), 2);
+        }
+      return std::sqrt(nearest) < rho * (1 - 1e-12) && std::sqrt(farthest) > rho * (1 + 1e-12);
     }
 
     double front_measure() const override { return measure; }

@@ -56,31 +56,42 @@ namespace penny
   {
     const auto &fe         = system.get_fe();
     const auto &elasticity = system.get_elasticity();
-    // The weight is smooth but only C3 at the edge of its support: a few extra points.
-    const QGauss<dim>                quadrature(fe.degree + 4);
-    const QGauss<dim - 1>            face_quadrature(fe.degree + 4);
-    FEValues<dim>                    fe_values(system.get_mapping(), fe, quadrature,
-                                               update_values | update_gradients | update_quadrature_points | update_JxW_values);
-    FEFaceValues<dim>                fe_face(system.get_mapping(), fe, face_quadrature,
-                                             update_gradients | update_quadrature_points | update_JxW_values);
+    // The weight is smooth but only C3 at the edge of its support: a few extra
+    // points, and cells and faces that the edge crosses split into 4 x 4 (4).
+    const unsigned int       n_points = fe.degree + 4;
+    const QGauss<dim>        quadrature(n_points);
+    const QIterated<dim>     edge_quadrature(QGauss<1>(n_points), 4);
+    const QGauss<dim - 1>    face_quadrature(n_points);
+    const QIterated<dim - 1> edge_face_quadrature(QGauss<1>(n_points), 4);
+    const UpdateFlags flags = update_values | update_gradients | update_quadrature_points | update_JxW_values;
+    const Mapping<dim> &mapping = system.get_mapping();
+    FEValues<dim>       fe_values(mapping, fe, quadrature, flags),
+        fe_edge_values(mapping, fe, edge_quadrature, flags);
+    const UpdateFlags face_flags = update_gradients | update_quadrature_points | update_JxW_values;
+    FEFaceValues<dim> fe_face(mapping, fe, face_quadrature, face_flags),
+        fe_edge_face(mapping, fe, edge_face_quadrature, face_flags);
     const FEValuesExtractors::Vector displacement(0);
-    std::vector<Tensor<2, dim>>      grad_u(quadrature.size()), grad_v(quadrature.size());
-    std::vector<Tensor<1, dim>>      value_u(quadrature.size()), value_v(quadrature.size());
-    std::vector<Tensor<2, dim>>      face_grad_u(face_quadrature.size()), face_grad_v(face_quadrature.size());
+    std::vector<Tensor<2, dim>>      grad_u, grad_v, face_grad_u, face_grad_v;
+    std::vector<Tensor<1, dim>>      value_u, value_v;
 
     double area_term = 0;
     for (const auto &cell : system.get_dof_handler().active_cell_iterators())
       {
         if (!cell->is_locally_owned() || !q.may_touch(cell))
           continue;
-        fe_values.reinit(cell);
-        fe_values[displacement].get_function_gradients(u, grad_u);
-        fe_values[displacement].get_function_gradients(v, grad_v);
-        fe_values[displacement].get_function_values(u, value_u);
-        fe_values[displacement].get_function_values(v, value_v);
-        for (const unsigned int k : fe_values.quadrature_point_indices())
+        FEValues<dim> &values = q.edge_crosses(cell->bounding_box()) ? fe_edge_values : fe_values;
+        values.reinit(cell);
+        for (auto *vector : {&grad_u, &grad_v})
+          vector->resize(values.n_quadrature_points);
+        for (auto *vector : {&value_u, &value_v})
+          vector->resize(values.n_quadrature_points);
+        values[displacement].get_function_gradients(u, grad_u);
+        values[displacement].get_function_gradients(v, grad_v);
+        values[displacement].get_function_values(u, value_u);
+        values[displacement].get_function_values(v, value_v);
+        for (const unsigned int k : values.quadrature_point_indices())
           {
-            const Point<dim> &x      = fe_values.quadrature_point(k);
+            const Point<dim> &x      = values.quadrature_point(k);
             const Tensor3     grad_q = Kinematics::gradient(q.gradient(x), q.value(x), x);
             if (grad_q.norm_square() == 0)
               continue;
@@ -91,27 +102,34 @@ namespace penny
             const double  W   = 0.5 * (s_u * strain(dv));
             const double  flux =
                 0.5 * (scalar_product(Tensor3(s_u), dv * grad_q) + scalar_product(Tensor3(s_v), du * grad_q));
-            area_term += (flux - W * trace(grad_q)) * Kinematics::measure(x) * fe_values.JxW(k);
+            area_term += (flux - W * trace(grad_q)) * Kinematics::measure(x) * values.JxW(k);
           }
       }
 
+    // Two passes over the gap face: the faces the edge of q leaves alone, then
+    // those it crosses, each with its own quadrature.
     double face_term = 0;
-    for_each_boundary_face(system.get_dof_handler(), boundary_id::gap_face, fe_face,
-                           [&](const auto &cell, const FEFaceValues<dim> &face) {
-                             if (!q.may_touch(cell))
-                               return;
-                             face[displacement].get_function_gradients(u, face_grad_u);
-                             face[displacement].get_function_gradients(v, face_grad_v);
-                             for (const unsigned int k : face.quadrature_point_indices())
-                               {
-                                 const Point<dim>    &x  = face.quadrature_point(k);
-                                 const Tensor<1, dim> qx = q.value(x);
-                                 face_term += 0.5 *
-                                              (t_u(x) * (face_grad_v[k][dim - 1] * qx) +
-                                               t_v(x) * (face_grad_u[k][dim - 1] * qx)) *
-                                              Kinematics::measure(x) * face.JxW(k);
-                               }
-                           });
+    for (const bool crossing : {false, true})
+      for_each_boundary_face(
+          system.get_dof_handler(), boundary_id::gap_face, crossing ? fe_edge_face : fe_face,
+          [&](const auto &cell, const FEFaceValues<dim> &face) {
+            if (!q.may_touch(cell) ||
+                q.edge_crosses(cell->face(face.get_face_number())->bounding_box()) != crossing)
+              return;
+            face_grad_u.resize(face.n_quadrature_points);
+            face_grad_v.resize(face.n_quadrature_points);
+            face[displacement].get_function_gradients(u, face_grad_u);
+            face[displacement].get_function_gradients(v, face_grad_v);
+            for (const unsigned int k : face.quadrature_point_indices())
+              {
+                const Point<dim>    &x  = face.quadrature_point(k);
+                const Tensor<1, dim> qx = q.value(x);
+                face_term +=
+                    0.5 *
+                    (t_u(x) * (face_grad_v[k][dim - 1] * qx) + t_v(x) * (face_grad_u[k][dim - 1] * qx)) *
+                    Kinematics::measure(x) * face.JxW(k);
+              }
+          });
 
     const double result =
         2 / q.front_measure() * Utilities::MPI::sum(area_term - face_term, system.get_communicator());
@@ -121,5 +139,6 @@ namespace penny
   }
 
   template class DomainIntegral<Axisymmetric>;
+  template class DomainIntegral<PlaneStrain>;
   template class DomainIntegral<Solid>;
 } // namespace penny

@@ -106,4 +106,13 @@ namespace penny
       return true;
     return std::min(x.distance(front.point(lo)), x.distance(front.point(hi))) <= reach;
   }
+
+  // The distance d from the front is 1-Lipschitz: over a box of half-diagonal
+  // r around its centre it stays within r of d(centre).
+  bool FrontSegmentExtension::edge_crosses(const BoundingBox<3> &box) const
+  {
+    const auto  &corners       = box.get_boundary_points();
+    const double half_diagonal = corners.first.distance(corners.second) / 2;
+    return std::abs(front.local_coordinates(box.center()).distance - rho) <= half_diagonal;
+  }
 } // namespace penny

@@ -43,7 +43,9 @@ namespace penny
     dealii::Tensor<1, 3> value(const dealii::Point<3> &x) const override;
     dealii::Tensor<2, 3> gradient(const dealii::Point<3> &x) const override;
     bool                 may_touch(const dealii::Triangulation<3>::cell_iterator &cell) const override;
-    double               front_measure() const override { return measure; }
+    // Where the tube d = rho around the front may cross the box.
+    bool   edge_crosses(const dealii::BoundingBox<3> &box) const override;
+    double front_measure() const override { return measure; }
 
     // f(phi), the mirror images included.
     double front_weight(double phi) const;

@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <regex>
+#include <sstream>
 #include <typeinfo>
 
 namespace penny
@@ -69,6 +70,12 @@ namespace penny
           PENNY_SECTION(fe_gap_area, "FE gap area", FeGapAreaParameters),
           PENNY_SECTION(magnification_scaling, "Magnification scaling", MagnificationScalingParameters),
           PENNY_SECTION(sinusoid, "Sinusoid", SinusoidParameters),
+          PENNY_SECTION(periodic_gap, "Periodic gap", PeriodicGapParameters),
+          PENNY_SECTION(gap_and_load, "Gap and load", GapAndLoadParameters),
+          PENNY_SECTION(depth_study, "Depth study", DepthStudyParameters),
+          PENNY_SECTION(westergaard_curve, "Westergaard curve", WestergaardCurveParameters),
+          PENNY_SECTION(johnson_curves, "Johnson curves", JohnsonCurvesParameters),
+          PENNY_SECTION(jump_into_contact, "Jump into contact", JumpIntoContactParameters),
           PENNY_SECTION(fields, "Fields", FieldParameters),
           PENNY_SECTION(output, "Output", OutputParameters)};
       return table;
@@ -127,6 +134,16 @@ namespace penny
         const double max_radius = *std::max_element(radii.begin(), radii.end());
         require(max_radius * c < room, "J-integral/Ring radii", max_radius,
                 "(0, min(H, R - c)/c = " + dealii::Utilities::to_string(room / c) + ")");
+      }
+    if (parameters.periodic_gap && parameters.depth_study)
+      {
+        const auto        &radii      = parameters.periodic_gap->ring_radii;
+        const double       max_radius = *std::max_element(radii.begin(), radii.end());
+        std::ostringstream smallest;
+        smallest << max_radius / 4;
+        for (const double depth : parameters.depth_study->depths)
+          require(max_radius < 4 * depth, "Depth study/Depths", depth,
+                  "(largest ring radius/4 = " + smallest.str() + ", inf)");
       }
     if (parameters.mesh)
       {

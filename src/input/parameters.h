@@ -5,6 +5,7 @@
 
 #include "input/fe_parameters.h"
 #include "input/scene_parameters.h"
+#include "input/sinusoid_parameters.h"
 #include "input/statistics_parameters.h"
 
 #include <deal.II/base/parameter_handler.h>
@@ -36,6 +37,12 @@ namespace penny
     fe_gap_area,
     magnification_scaling,
     sinusoid,
+    periodic_gap,
+    gap_and_load,
+    depth_study,
+    westergaard_curve,
+    johnson_curves,
+    jump_into_contact,
     fields,
     output
   };
@@ -65,6 +72,12 @@ namespace penny
     std::optional<FeGapAreaParameters>            fe_gap_area;
     std::optional<MagnificationScalingParameters> magnification_scaling;
     std::optional<SinusoidParameters>             sinusoid;
+    std::optional<PeriodicGapParameters>          periodic_gap;
+    std::optional<GapAndLoadParameters>           gap_and_load;
+    std::optional<DepthStudyParameters>           depth_study;
+    std::optional<WestergaardCurveParameters>     westergaard_curve;
+    std::optional<JohnsonCurvesParameters>        johnson_curves;
+    std::optional<JumpIntoContactParameters>      jump_into_contact;
     std::optional<FieldParameters>                fields;
     std::optional<OutputParameters>               output;
 

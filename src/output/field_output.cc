@@ -32,13 +32,11 @@ namespace penny
     class FieldPostprocessor : public DataPostprocessor<2>
     {
     public:
-      FieldPostprocessor(const IsotropicElasticity &elasticity, const RingExtension<2> &ring, const Point<2> &origin,
-                         const double scale)
-        : elasticity(elasticity)
-        , ring(ring)
-        , origin(origin)
-        , scale(scale)
-      {}
+      FieldPostprocessor(const IsotropicElasticity &elasticity, const RingExtension<2> &ring,
+                         const Point<2> &origin, const double scale)
+          : elasticity(elasticity), ring(ring), origin(origin), scale(scale)
+      {
+      }
 
       void evaluate_vector_field(const DataPostprocessorInputs::Vector<2> &inputs,
                                  std::vector<Vector<double>>              &computed) const override
@@ -53,15 +51,15 @@ namespace penny
                 u[i]      = inputs.solution_values[k][i];
               }
             const Point<2> x = origin + scale * inputs.evaluation_points[k];
-            const Strain    s = elasticity.stress(strain(Axisymmetric::gradient(grad_u, u, x)));
-            computed[k][0]    = u[0];
-            computed[k][1]    = u[1];
-            computed[k][2]    = s[0][0];
-            computed[k][3]    = s[1][1];
-            computed[k][4]    = s[2][2];
-            computed[k][5]    = s[0][1];
-            computed[k][6]    = von_mises(s);
-            computed[k][7]    = ring.weight(x);
+            const Strain   s = elasticity.stress(strain(Axisymmetric::gradient(grad_u, u, x)));
+            computed[k][0]   = u[0];
+            computed[k][1]   = u[1];
+            computed[k][2]   = s[0][0];
+            computed[k][3]   = s[1][1];
+            computed[k][4]   = s[2][2];
+            computed[k][5]   = s[0][1];
+            computed[k][6]   = von_mises(s);
+            computed[k][7]   = ring.weight(x);
           }
       }
 
@@ -71,7 +69,7 @@ namespace penny
       get_data_component_interpretation() const override
       {
         return std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-          field_names.size(), DataComponentInterpretation::component_is_scalar);
+            field_names.size(), DataComponentInterpretation::component_is_scalar);
       }
 
       UpdateFlags get_needed_update_flags() const override
@@ -90,10 +88,7 @@ namespace penny
     class TipFrameShift : public Function<2>
     {
     public:
-      TipFrameShift(const Point<2> &tip)
-        : Function<2>(2)
-        , tip(tip)
-      {}
+      TipFrameShift(const Point<2> &tip) : Function<2>(2), tip(tip) {}
 
       double value(const Point<2> &x, const unsigned int component) const override
       {
@@ -126,19 +121,16 @@ namespace penny
     }
   } // namespace
 
-  void write_fields(const LinearElasticSystem<Axisymmetric> &system,
-                    const DisplacementVector                &displacement,
-                    const RingExtension<2>                  &ring,
-                    const Point<2>                          &tip,
-                    const ResultFolder                      &results)
+  void write_fields(const LinearElasticSystem<Axisymmetric> &system, const DisplacementVector &displacement,
+                    const RingExtension<2> &ring, const Point<2> &tip, const ResultFolder &results)
   {
-    const auto              &dof_handler = system.get_dof_handler();
-    const unsigned int       degree      = system.get_fe().degree;
-    const auto add_fields = [&](DataOut<2> &data_out, const FieldPostprocessor &fields) {
+    const auto        &dof_handler = system.get_dof_handler();
+    const unsigned int degree      = system.get_fe().degree;
+    const auto         add_fields  = [&](DataOut<2> &data_out, const FieldPostprocessor &fields) {
       data_out.attach_dof_handler(dof_handler);
       data_out.add_data_vector(displacement, std::vector<std::string>(2, "u"), DataOut<2>::type_dof_data,
-                               std::vector<DataComponentInterpretation::DataComponentInterpretation>(
-                                 2, DataComponentInterpretation::component_is_part_of_vector));
+                                        std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+                                   2, DataComponentInterpretation::component_is_part_of_vector));
       data_out.add_data_vector(displacement, fields);
     };
 
@@ -169,16 +161,14 @@ namespace penny
   }
 
   void write_opening_profile(const LinearElasticSystem<Axisymmetric> &system,
-                             const DisplacementVector                &displacement,
-                             const FaceLoad                          &load,
-                             const double                             gap_radius,
-                             const double                             plane_strain_modulus,
-                             const ResultFolder                      &results)
+                             const DisplacementVector &displacement, const FaceLoad &load,
+                             const double gap_radius, const double plane_strain_modulus,
+                             const ResultFolder &results)
   {
-    const QGaussLobatto<1>           ends_and_middle(3);
-    FEFaceValues<2>                  fe_face(system.get_fe(), ends_and_middle, update_values | update_quadrature_points);
-    const FEValuesExtractors::Vector u(0);
-    std::vector<Tensor<1, 2>>        values(ends_and_middle.size());
+    const QGaussLobatto<1> ends_and_middle(3);
+    FEFaceValues<2> fe_face(system.get_fe(), ends_and_middle, update_values | update_quadrature_points);
+    const FEValuesExtractors::Vector       u(0);
+    std::vector<Tensor<1, 2>>              values(ends_and_middle.size());
     std::vector<std::pair<double, double>> profile; // (r, u_z)
     for_each_boundary_face(system.get_dof_handler(), boundary_id::gap_face, fe_face,
                            [&](const auto &, const FEFaceValues<2> &face) {
@@ -190,9 +180,9 @@ namespace penny
     for (const auto &part : Utilities::MPI::gather(system.get_communicator(), profile))
       all.insert(all.end(), part.begin(), part.end());
     std::sort(all.begin(), all.end());
-    all.erase(std::unique(all.begin(), all.end(),
-                          [](const auto &a, const auto &b) { return a.first == b.first; }),
-              all.end());
+    all.erase(
+        std::unique(all.begin(), all.end(), [](const auto &a, const auto &b) { return a.first == b.first; }),
+        all.end());
 
     // The exact profile on rank 0 only: it may cost a quadrature per point.
     Table table({{"r (m)"}, {"r/c"}, {"w FE (m)"}, {"w exact (m)"}});

@@ -21,17 +21,11 @@
 
 namespace penny
 {
-  void write_fields(const LinearElasticSystem<Axisymmetric> &system,
-                    const DisplacementVector                &displacement,
-                    const RingExtension<2>                  &ring,
-                    const dealii::Point<2>                  &tip,
-                    const ResultFolder                      &results);
+  void write_fields(const LinearElasticSystem<Axisymmetric> &system, const DisplacementVector &displacement,
+                    const RingExtension<2> &ring, const dealii::Point<2> &tip, const ResultFolder &results);
 
   // u_z at the ends and midpoints of the gap-face cells, beside the closed form.
   void write_opening_profile(const LinearElasticSystem<Axisymmetric> &system,
-                             const DisplacementVector                &displacement,
-                             const FaceLoad                          &load,
-                             double                                   gap_radius,
-                             double                                   plane_strain_modulus,
-                             const ResultFolder                      &results);
+                             const DisplacementVector &displacement, const FaceLoad &load, double gap_radius,
+                             double plane_strain_modulus, const ResultFolder &results);
 } // namespace penny

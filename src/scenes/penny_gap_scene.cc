@@ -97,9 +97,10 @@ namespace penny
       {
         TimerOutput::Scope scope(timer, "output");
         const double       largest = *std::max_element(ring_radii.begin(), ring_radii.end());
-        write_fields(model.get_system(), u, RingExtension<2>(model.crack_tip(), largest * c, c), model.crack_tip(),
-                     *fields);
-        write_opening_profile(model.get_system(), u, load, c, model.material().plane_strain_modulus(), *fields);
+        write_fields(model.get_system(), u, RingExtension<2>(model.crack_tip(), largest * c, c),
+                     model.crack_tip(), *fields);
+        write_opening_profile(model.get_system(), u, load, c, model.material().plane_strain_modulus(),
+                              *fields);
       }
     return results;
   }

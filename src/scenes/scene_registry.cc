@@ -6,6 +6,7 @@
 #include "scenes/convergence_scene.h"
 #include "scenes/fe_gap_area_scene.h"
 #include "scenes/penny_gap_scene.h"
+#include "scenes/sinusoid_scenes.h"
 #include "scenes/stability_scene.h"
 #include "scenes/statistics_scenes.h"
 
@@ -27,6 +28,15 @@ namespace penny
     {
       std::vector<Section> sections = {S::geometry,       S::material,      S::load,       S::mesh,
                                        S::finite_element, S::linear_solver, S::j_integral, S::output};
+      sections.insert(sections.end(), more.begin(), more.end());
+      return sections;
+    }
+
+    // The sections of every periodic-gap FE model of the sinusoid, and more.
+    std::vector<Section> periodic_and(std::vector<Section> more)
+    {
+      std::vector<Section> sections = {S::material, S::periodic_gap, S::finite_element, S::linear_solver,
+                                       S::output};
       sections.insert(sections.end(), more.begin(), more.end());
       return sections;
     }
@@ -148,6 +158,32 @@ namespace penny
       {"sinusoid-contact",
        "Johnson's adhesive 1D sinusoid from its closed form (paper Fig. 1)",
        {S::sinusoid, S::output}, without_verdict(run_sinusoid_contact_scene)},
+      { "periodic-gap",
+        "one FE solve of a gap of the sinusoid's periodic array (plane strain): K_I from J-integrals and the "
+        "signed K_I on every ring, beside sqrt(lambda) [p* cos^2(pi c/lambda) - p_bar] sqrt(tan(pi "
+        "c/lambda))",
+        periodic_and({ S::gap_and_load }),
+        without_verdict(run_periodic_gap_scene) },
+      { "periodic-gap-depth",
+        "the periodic-gap K_I against the depth D/lambda of the truncated solid: the truncation study",
+        periodic_and({ S::gap_and_load, S::depth_study }),
+        without_verdict(run_periodic_gap_depth_scene) },
+      { "westergaard-curve",
+        "the adhesionless sinusoid: contact half-width a from FE roots of K_I = 0 beside "
+        "p_bar/p* = sin^2(pi a/lambda)",
+        periodic_and({ S::westergaard_curve }),
+        without_verdict(run_westergaard_curve_scene) },
+      { "johnson-curves",
+        "Johnson's adhesive curves p_bar/p*(a/lambda) from FE roots of K_I = K_Ic beside the closed form "
+        "(paper Fig. 1 from FE)",
+        periodic_and({ S::johnson_curves }),
+        without_verdict(run_johnson_curves_scene) },
+      { "jump-into-contact",
+        "from FE: the critical alpha of spontaneous full contact at zero load, and the jump-into-contact "
+        "load "
+        "1 - p_bar_max/p* against alpha beside 5 (alpha/4)^(4/5)",
+        periodic_and({ S::jump_into_contact }),
+        without_verdict(run_jump_into_contact_scene) },
       {"zero-load-gap-area",
        "A_nc/A_0 at zero mean pressure against p0/sqrt(V) (paper Fig. 3)",
        {S::material, S::adhesion, S::roughness, S::area_load, S::zero_load_gap_area, S::output},

@@ -1,6 +1,7 @@
 #include "scenes/statistics_scenes.h"
 
 #include "fracture/adhesive_gap.h"
+#include "fracture/periodic_array.h"
 #include "output/table.h"
 #include "scenes/scene_support.h"
 #include "statistics/contact_area.h"
@@ -54,37 +55,30 @@ namespace penny
     std::vector<Table::Column> columns  = {{"a/lambda"}};
     for (const double alpha : sinusoid.alphas)
       columns.push_back({"p/p* alpha=" + name_of(alpha)});
-    Table                            table(columns);
-    std::vector<std::vector<double>> loads(sinusoid.alphas.size());
-    std::vector<double>              ratios;
+    Table table(columns);
     for (unsigned int i = 1; i <= sinusoid.n_points; ++i)
       {
-        ratios.push_back(0.5 * i / (sinusoid.n_points + 1));
-        std::vector<Table::Cell> row = {ratios.back()};
-        for (unsigned int k = 0; k < sinusoid.alphas.size(); ++k)
-          {
-            loads[k].push_back(johnson_sinusoid_load(ratios.back(), sinusoid.alphas[k]));
-            row.emplace_back(loads[k].back());
-          }
+        const double             ratio = 0.5 * i / (sinusoid.n_points + 1);
+        std::vector<Table::Cell> row   = {ratio};
+        for (const double alpha : sinusoid.alphas)
+          row.emplace_back(periodic_array::johnson_load(ratio, alpha));
         table.add_row(row);
       }
     results.write_csv("sinusoid-contact.csv", table);
 
     // The jump into full contact is the curve's maximum inside (0, 1/2), or
-    // its end a -> lambda/2 without adhesion.
+    // its end a -> lambda/2 without adhesion; beyond (25/16) (3/5)^(3/4) the
+    // curve has none.
     Table jumps({{"alpha"}, {"jump into full contact at p/p*"}, {"a/lambda"}});
-    for (unsigned int k = 0; k < sinusoid.alphas.size(); ++k)
-      {
-        const auto  &load = loads[k];
-        unsigned int best = load.size() - 1;
-        for (unsigned int i = 1; i + 1 < load.size(); ++i)
-          if (load[i] >= load[i - 1] && load[i] >= load[i + 1] &&
-              (best == load.size() - 1 || load[i] > load[best]))
-            best = i;
-        jumps.add_row({sinusoid.alphas[k], load[best], ratios[best]});
-      }
-    log << "Johnson's adhesive 1D sinusoid: p/p* = sin^2(pi a/lambda) - alpha sqrt(tan(pi a/lambda))\n"
-        << "(the jump: the largest interior maximum on the grid)\n";
+    for (const double alpha : sinusoid.alphas)
+      if (alpha < periodic_array::largest_alpha_with_extremes())
+        {
+          const auto jump = periodic_array::jump_into_contact(alpha);
+          jumps.add_row({alpha, jump.load_ratio, jump.contact_ratio});
+        }
+      else
+        jumps.add_row({alpha, "none: p/p* falls monotonically", ""});
+    log << "Johnson's adhesive 1D sinusoid: p/p* = sin^2(pi a/lambda) - alpha sqrt(tan(pi a/lambda))\n";
     jumps.print(log);
     log << "Table: " << results.directory().string() << "/sinusoid-contact.csv\n";
   }
@@ -166,8 +160,8 @@ namespace penny
               const double exact_area = noncontact_area(gaps, exact, p_bar);
               table.add_row({hurst, zeta, gaps.adhesion, p_bar, closed, integral, exact_area,
                              linear_law_noncontact_area(adhesionless, p_bar),
-                             persson_contact_area(gaps.adhesion, p_bar), persson_contact_area(0, p_bar), closed > 1,
-                             exact_area > 1});
+                             persson_contact_area(gaps.adhesion, p_bar), persson_contact_area(0, p_bar),
+                             closed > 1, exact_area > 1});
             }
           summary.add_row({hurst, zeta, gaps.adhesion, gaps.prefactor, linear_law_noncontact_area(gaps, 0),
                            noncontact_area(gaps, exact, 0)});

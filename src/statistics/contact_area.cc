@@ -126,10 +126,4 @@ namespace penny
       return numerator / denominator;
     };
   }
-
-  double johnson_sinusoid_load(const double contact_ratio, const double alpha)
-  {
-    const double angle = M_PI * contact_ratio;
-    return std::pow(std::sin(angle), 2) - alpha * std::sqrt(std::tan(angle));
-  }
 } // namespace penny

@@ -60,8 +60,4 @@ namespace penny
 
   // The largest t = sqrt(P/sqrt(V) - p0/sqrt(V)) noncontact_area() integrates to.
   double integration_limit(double adhesion, double mean_pressure);
-
-  // Johnson's adhesive 1D sinusoid (paper Fig. 1): p_bar/p* against the
-  // contact semi-width a/lambda in (0, 1/2) for the adhesion parameter alpha.
-  double johnson_sinusoid_load(double contact_ratio, double alpha);
 } // namespace penny
