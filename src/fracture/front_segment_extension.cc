@@ -60,9 +60,19 @@ namespace penny
     return weight_and_slope(phi).first;
   }
 
+  const EllipticalFront::Coordinates &FrontSegmentExtension::coordinates(const Point<3> &x) const
+  {
+    if (!(x == last_point))
+      {
+        last_point       = x;
+        last_coordinates = front.local_coordinates(x);
+      }
+    return last_coordinates;
+  }
+
   Tensor<1, 3> FrontSegmentExtension::value(const Point<3> &x) const
   {
-    const auto   local = front.local_coordinates(x);
+    const auto  &local = coordinates(x);
     const double s     = 1 - (local.distance / rho) * (local.distance / rho);
     if (s <= 0)
       return {};
@@ -75,7 +85,7 @@ namespace penny
   // positive outside the ellipse), grad d = (x - x_front)/d, dn/dphi = kappa |dx/dphi| t.
   Tensor<2, 3> FrontSegmentExtension::gradient(const Point<3> &x) const
   {
-    const auto   local = front.local_coordinates(x);
+    const auto  &local = coordinates(x);
     const double s     = 1 - (local.distance / rho) * (local.distance / rho);
     if (s <= 0)
       return {};

@@ -29,6 +29,8 @@
 #include "fe/elliptical_gap_mesh.h"
 #include "fracture/crack_extension.h"
 
+#include <limits>
+
 namespace penny
 {
   class FrontSegmentExtension : public CrackExtension<3>
@@ -53,11 +55,17 @@ namespace penny
   private:
     // f(phi) and df/dphi.
     std::pair<double, double> weight_and_slope(double phi) const;
+    // The front coordinates of x; the domain integral asks value() and
+    // gradient() at the same point in turn, so the last point's are kept.
+    const EllipticalFront::Coordinates &coordinates(const dealii::Point<3> &x) const;
 
     const EllipticalFront front;
     const double          centre;
     const double          half_width;
     const double          rho;
     double                measure;
+
+    mutable dealii::Point<3>             last_point{std::numeric_limits<double>::quiet_NaN(), 0, 0};
+    mutable EllipticalFront::Coordinates last_coordinates{};
   };
 } // namespace penny

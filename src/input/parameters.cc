@@ -76,6 +76,7 @@ namespace penny
           PENNY_SECTION(westergaard_curve, "Westergaard curve", WestergaardCurveParameters),
           PENNY_SECTION(johnson_curves, "Johnson curves", JohnsonCurvesParameters),
           PENNY_SECTION(jump_into_contact, "Jump into contact", JumpIntoContactParameters),
+          PENNY_SECTION(elliptical_gap, "Elliptical gap", EllipticalGapParameters),
           PENNY_SECTION(fields, "Fields", FieldParameters),
           PENNY_SECTION(output, "Output", OutputParameters)};
       return table;

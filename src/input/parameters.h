@@ -3,6 +3,7 @@
 // checked and written back, and a subsection it does not read is an error.
 #pragma once
 
+#include "input/elliptical_parameters.h"
 #include "input/fe_parameters.h"
 #include "input/scene_parameters.h"
 #include "input/sinusoid_parameters.h"
@@ -43,6 +44,7 @@ namespace penny
     westergaard_curve,
     johnson_curves,
     jump_into_contact,
+    elliptical_gap,
     fields,
     output
   };
@@ -78,6 +80,7 @@ namespace penny
     std::optional<WestergaardCurveParameters>     westergaard_curve;
     std::optional<JohnsonCurvesParameters>        johnson_curves;
     std::optional<JumpIntoContactParameters>      jump_into_contact;
+    std::optional<EllipticalGapParameters>        elliptical_gap;
     std::optional<FieldParameters>                fields;
     std::optional<OutputParameters>               output;
 
