@@ -78,8 +78,8 @@ namespace penny
     require(box_width >= 2.8, section + "Box width R/a", box_width, "[2.8, inf)");
     require(box_height >= 2.8, section + "Box height H/a", box_height, "[2.8, inf)");
     require(cells_along_front % 2 == 0, section + "Cells along front", cells_along_front,
-            "even numbers in [2, 256]");
-    require(sectors % 4 == 0, section + "Sectors around front", sectors, "multiples of 4 in [4, 64]");
+            "{2, 4, 6, ..., 256}");
+    require(sectors % 4 == 0, section + "Sectors around front", sectors, "{4, 8, 12, ..., 64}");
     require(front_cell_size > 0 && front_cell_size < 0.33, section + "Front cell size", front_cell_size,
             "(0, 0.33)");
     require(ring_ratio > 1 && ring_ratio <= 4, section + "Ring ratio", ring_ratio, "(1, 4]");
