@@ -2,7 +2,8 @@
 // weight of the localised domain integral (no first or second moment, the
 // folding at the symmetry planes, its gradient, where its ring edge crosses
 // a cell), and the elliptical-gap scene under uniform pressure of either
-// sign against Green-Sneddon/Irwin, with its result files.
+// sign against Green-Sneddon/Irwin, with its result files; and Galin's
+// closed form for quadratic tractions in two known cases.
 #define BOOST_TEST_MODULE elliptical_gap
 #define BOOST_TEST_NO_MAIN
 #include "fracture/elliptical_crack.h"
@@ -162,4 +163,23 @@ BOOST_AUTO_TEST_CASE(uniform_pressure_of_either_sign)
       for (const std::string file : {"front.csv", "summary.csv", "front.vtu", "solution.vtu", "solution.pvd"})
         BOOST_TEST(std::filesystem::is_regular_file(results.directory() / file), file);
     }
+}
+
+// Galin's quadratic tractions: the uniform one is Green and Sneddon's, and on
+// the circle t = x^2 + y^2 = r^2 gives Sneddon's
+// K_I = 2/sqrt(pi c) int_0^c r^3/sqrt(c^2 - r^2) dr = 4 c^(5/2)/(3 sqrt(pi)).
+BOOST_AUTO_TEST_CASE(galin_tractions_against_known_cases)
+{
+  const double               e_prime = 1e9 / (1 - 0.09);
+  const GreenSneddonSolution green_sneddon(2, 0.7, 1, e_prime);
+  const GalinSolution        uniform(2, 0.7, {1, 0, 0}, e_prime);
+  for (const double phi : {0., 0.4, 1., M_PI / 2})
+    BOOST_TEST(uniform.stress_intensity_factor(phi) == green_sneddon.stress_intensity_factor(phi),
+               tt::tolerance(1e-10));
+  BOOST_TEST(uniform.opening(0.5, 0.3) == green_sneddon.opening(0.5, 0.3), tt::tolerance(1e-10));
+  const double        c = 1.5;
+  const GalinSolution squared_radius(c, c, {0, 1, 1}, e_prime);
+  for (const double phi : {0., 0.4, 1., M_PI / 2})
+    BOOST_TEST(squared_radius.stress_intensity_factor(phi) == 4 * std::pow(c, 2.5) / (3 * std::sqrt(M_PI)),
+               tt::tolerance(1e-10));
 }
