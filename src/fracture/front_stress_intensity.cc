@@ -32,25 +32,23 @@ namespace penny
       }
   }
 
+  // All points on all rings in one pass of the domain integral.
   std::vector<std::vector<double>>
   FrontStressIntensity::signed_sifs(const DisplacementVector &u, const EllipticalGapModel::Traction &t,
                                     const DisplacementVector           &u_ref,
                                     const EllipticalGapModel::Traction &t_ref) const
   {
-    std::vector<std::vector<double>> K(extensions.size());
-    for (unsigned int r = 0; r < extensions.size(); ++r)
-      for (const auto &q : extensions[r])
-        K[r].push_back(j_integral.signed_stress_intensity_factor(u, t, u_ref, t_ref, q));
-    return K;
-  }
-
-  std::vector<std::vector<double>> FrontStressIntensity::sifs(const DisplacementVector           &u,
-                                                              const EllipticalGapModel::Traction &t) const
-  {
-    std::vector<std::vector<double>> K(extensions.size());
-    for (unsigned int r = 0; r < extensions.size(); ++r)
-      for (const auto &q : extensions[r])
-        K[r].push_back(j_integral.stress_intensity_factor(u, t, q));
+    std::vector<const CrackExtension<3> *> all;
+    for (const auto &ring : extensions)
+      for (const auto &q : ring)
+        all.push_back(&q);
+    const std::vector<double> flat = j_integral.signed_stress_intensity_factors(u, t, u_ref, t_ref, all);
+    std::vector<std::vector<double>> K;
+    for (unsigned int r = 0, i = 0; r < extensions.size(); ++r)
+      {
+        K.emplace_back(flat.begin() + i, flat.begin() + i + extensions[r].size());
+        i += extensions[r].size();
+      }
     return K;
   }
 } // namespace penny

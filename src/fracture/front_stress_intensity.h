@@ -32,10 +32,6 @@ namespace penny
                                                  const DisplacementVector           &u_ref,
                                                  const EllipticalGapModel::Traction &t_ref) const;
 
-    // |K_I| = sqrt(E' J) per ring and point.
-    std::vector<std::vector<double>> sifs(const DisplacementVector           &u,
-                                          const EllipticalGapModel::Traction &t) const;
-
     const std::vector<double> &get_angles() const { return angles; }
     // The extension of point i on ring r.
     const FrontSegmentExtension &extension(unsigned int ring, unsigned int i) const
