@@ -114,7 +114,8 @@ namespace penny
     }
 
     // K_I at every front point on every ring against Green-Sneddon/Irwin.
-    Verdict elliptical_gap_verdict(const Parameters &parameters, const ResultFolder &results, std::ostream &log)
+    Verdict elliptical_gap_verdict(const Parameters &parameters, const ResultFolder &results,
+                                   std::ostream &log)
     {
       return verdict("largest relative error of K_I over the front points and rings",
                      run_elliptical_gap_scene(parameters, results, log).largest_error,
