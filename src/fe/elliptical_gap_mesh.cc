@@ -1,5 +1,7 @@
 #include "fe/elliptical_gap_mesh.h"
 
+#include "fe/boundary_ids.h"
+
 #include <deal.II/base/mpi.h>
 #include <deal.II/grid/grid_tools.h>
 #include <deal.II/grid/manifold.h>
@@ -430,15 +432,14 @@ namespace penny
                   const Point<3> &y = face->vertex(v);
                   inside &= (y[0] / a) * (y[0] / a) + (y[1] / b) * (y[1] / b) < 1 + 1e-12;
                 }
-              face->set_boundary_id(inside ? elliptical_boundary_id::gap_face
-                                           : elliptical_boundary_id::ligament);
+              face->set_boundary_id(inside ? boundary_id::gap_face : boundary_id::ligament);
             }
           else if (std::abs(x[0]) < tolerance)
-            face->set_boundary_id(elliptical_boundary_id::symmetry_x);
+            face->set_boundary_id(boundary_id::symmetry);
           else if (std::abs(x[1]) < tolerance)
-            face->set_boundary_id(elliptical_boundary_id::symmetry_y);
+            face->set_boundary_id(boundary_id::second_symmetry);
           else
-            face->set_boundary_id(elliptical_boundary_id::far);
+            face->set_boundary_id(boundary_id::far);
         }
     triangulation.copy_triangulation(coarse);
   }
@@ -465,6 +466,16 @@ namespace penny
     return n / n.norm();
   }
 
+  double EllipticalFront::arc_length_rate(const double phi) const
+  {
+    return std::hypot(a * std::sin(phi), b * std::cos(phi));
+  }
+
+  double EllipticalFront::curvature(const double phi) const
+  {
+    return a * b / std::pow(arc_length_rate(phi), 3);
+  }
+
   // The nearest point of the ellipse to (x, y), by Eberly's robust bisection
   // ("Distance from a point to an ellipse", 2013): with z_i = y_i/e_i it is
   // x_i = e_i^2 y_i/(s + e_i^2) for the root s of
@@ -481,21 +492,29 @@ namespace penny
           x0 = y0, x1 = y1;
         else
           {
-            // s in units of b^2: root of (r0 z0/(s + r0))^2 + (z1/(s + 1))^2 = 1.
+            // s in units of b^2: root of F(s) = (r0 z0/(s + r0))^2 + (z1/(s + 1))^2 - 1,
+            // convex and decreasing on s > -1, bracketed by [s0, s1]. Newton's
+            // method from the lower end climbs to the root monotonically (the
+            // tangent of a convex function lies below it), and stops when
+            // rounding ends the climb; bisection where rounding breaks that.
             const double r0 = (a / b) * (a / b), n0 = r0 * z0;
-            double       s0 = z1 - 1, s1 = g < 0 ? 0 : std::hypot(n0, z1) - 1, s = 0;
-            for (unsigned int iteration = 0; iteration < 2000; ++iteration)
+            double       s0 = z1 - 1, s1 = g < 0 ? 0 : std::hypot(n0, z1) - 1, s = s0;
+            for (unsigned int iteration = 0; iteration < 200; ++iteration)
               {
-                s = (s0 + s1) / 2;
-                if (s == s0 || s == s1)
+                const double f0 = n0 / (s + r0), f1 = z1 / (s + 1), F = f0 * f0 + f1 * f1 - 1;
+                if (F <= 0)
+                  {
+                    s1 = s;
+                    s  = (s0 + s1) / 2;
+                    if (s == s0 || s == s1)
+                      break;
+                    continue;
+                  }
+                s0                = s;
+                const double next = s + F / (2 * (f0 * f0 / (s + r0) + f1 * f1 / (s + 1)));
+                if (!(next > s))
                   break;
-                const double f0 = n0 / (s + r0), f1 = z1 / (s + 1), h = f0 * f0 + f1 * f1 - 1;
-                if (h > 0)
-                  s0 = s;
-                else if (h < 0)
-                  s1 = s;
-                else
-                  break;
+                s = std::min(next, s1);
               }
             x0 = r0 * y0 / (s + r0);
             x1 = y1 / (s + 1);

@@ -61,21 +61,14 @@ namespace penny
                                             // the tube exactly, so the ratio used is close to it)
   };
 
-  namespace elliptical_boundary_id
-  {
-    constexpr dealii::types::boundary_id symmetry_x = 1; // x = 0: u_x = 0
-    constexpr dealii::types::boundary_id gap_face   = 2; // z = 0 inside the ellipse: loaded
-    constexpr dealii::types::boundary_id ligament   = 3; // z = 0 outside: u_z = 0
-    constexpr dealii::types::boundary_id far        = 4; // x = R, y = R, z = H
-    constexpr dealii::types::boundary_id symmetry_y = 5; // y = 0: u_y = 0
-  }                                                      // namespace elliptical_boundary_id
-
   // Manifold id of the cells swept along the front (the chart above).
   constexpr dealii::types::manifold_id elliptical_front_manifold_id = 1;
 
   // Builds the coarse mesh into an empty `triangulation` (serial or
   // parallel::distributed: every rank builds the same coarse mesh), with the
-  // boundary ids above and the front manifold attached. Throws
+  // boundary ids of fe/boundary_ids.h (symmetry: x = 0, second_symmetry:
+  // y = 0, gap_face: z = 0 inside the ellipse, ligament: z = 0 outside it,
+  // far: x = R, y = R, z = H) and the front manifold attached. Throws
   // std::invalid_argument for parameters out of range.
   void make_elliptical_gap_mesh(dealii::Triangulation<3>          &triangulation,
                                 const EllipticalGapMeshParameters &p);
@@ -98,6 +91,12 @@ namespace penny
     // Unit normal in the plane z = 0, pointing away from the gap (the
     // direction of crack advance).
     dealii::Tensor<1, 3> unit_normal(double phi) const;
+    // |dx/dphi| = (a^2 sin^2 phi + b^2 cos^2 phi)^(1/2): arc length per radian.
+    double arc_length_rate(double phi) const;
+    // Curvature a b/|dx/dphi|^3; its largest value, a/b^2, is at phi = 0.
+    double curvature(double phi) const;
+    double semi_axis_a() const { return a; }
+    double semi_axis_b() const { return b; }
 
     // Coordinates of x relative to its nearest front point: that point's
     // parametric angle phi, the distance from it (x lies in the plane normal to

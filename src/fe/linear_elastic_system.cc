@@ -14,22 +14,60 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include <Epetra_Map.h>
+#include <Epetra_MultiVector.h>
+#include <Teuchos_ParameterList.hpp>
+
 #include <cmath>
 #include <regex>
 #include <sstream>
+#include <type_traits>
 
 namespace penny
 {
   using namespace dealii;
 
+  namespace
+  {
+    // The translations e_i and the rotations e_i x x at the support points of
+    // the locally owned degrees of freedom, in the row order of the matrix.
+    Epetra_MultiVector rigid_body_modes(const DoFHandler<3> &dof_handler, const Mapping<3> &mapping,
+                                        const Epetra_Map &rows)
+    {
+      const FiniteElement<3>              &fe    = dof_handler.get_fe();
+      const IndexSet                      &owned = dof_handler.locally_owned_dofs();
+      Epetra_MultiVector                   modes(rows, 6);
+      const Quadrature<3>                  support_points(fe.get_unit_support_points());
+      FEValues<3>                          fe_values(mapping, fe, support_points, update_quadrature_points);
+      std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
+      for (const auto &cell : dof_handler.active_cell_iterators())
+        if (cell->is_locally_owned())
+          {
+            fe_values.reinit(cell);
+            cell->get_dof_indices(local_dofs);
+            for (unsigned int i = 0; i < local_dofs.size(); ++i)
+              if (owned.is_element(local_dofs[i]))
+                {
+                  const unsigned int row = owned.index_within_set(local_dofs[i]);
+                  const unsigned int c   = fe.system_to_component_index(i).first;
+                  const Point<3>    &x   = fe_values.quadrature_point(i);
+                  modes[c][row]          = 1;
+                  // Rotation about axis r: (e_r x x)_c = eps_crj x_j.
+                  modes[3 + (c + 1) % 3][row] = x[(c + 2) % 3];
+                  modes[3 + (c + 2) % 3][row] = -x[(c + 1) % 3];
+                }
+          }
+      return modes;
+    }
+  } // namespace
+
   template <typename Kinematics>
-  LinearElasticSystem<Kinematics>::LinearElasticSystem(const Triangulation<dim>     &triangulation,
-                                                       const unsigned int            degree,
-                                                       const MaterialParameters     &material,
-                                                       const LinearSolverParameters &linear_solver,
-                                                       std::vector<ZeroDisplacement> zero_displacements,
-                                                       TimerOutput                  &timer)
-      : fe(FE_Q<dim>(degree), dim), elasticity{material.lame_lambda(), material.lame_mu()},
+  LinearElasticSystem<Kinematics>::LinearElasticSystem(
+      const Triangulation<dim> &triangulation, const unsigned int degree, const unsigned int mapping_degree,
+      const MaterialParameters &material, const LinearSolverParameters &linear_solver,
+      std::vector<ZeroDisplacement> zero_displacements, TimerOutput &timer)
+      : fe(FE_Q<dim>(degree), dim),
+        mapping(mapping_degree), elasticity{material.lame_lambda(), material.lame_mu()},
         linear_solver(linear_solver), zero_displacements(std::move(zero_displacements)), timer(timer),
         dof_handler(triangulation)
   {
@@ -86,7 +124,7 @@ namespace penny
   {
     TimerOutput::Scope                   scope(timer, "assembly");
     const QGauss<dim>                    quadrature(fe.degree + 2);
-    FEValues<dim>                        fe_values(fe, quadrature,
+    FEValues<dim>                        fe_values(mapping, fe, quadrature,
                                                    update_values | update_gradients | update_quadrature_points | update_JxW_values);
     const FEValuesExtractors::Vector     displacement(0);
     const unsigned int                   dofs_per_cell = fe.n_dofs_per_cell();
@@ -201,8 +239,29 @@ namespace penny
         data.higher_order_elements = fe.degree > 1;
         data.smoother_sweeps       = 2;
         data.aggregation_threshold = 0.02;
-        DoFTools::extract_constant_modes(dof_handler, ComponentMask(), data.constant_modes);
-        amg.initialize(stiffness, data);
+        if constexpr (std::is_same_v<Kinematics, Solid>)
+          {
+            // ML's smoothed aggregation builds its coarse spaces from the
+            // near-null space of the operator: in 3D the six rigid-body
+            // motions. (The constant modes of the components miss the three
+            // rotations, and CG then needs several times the iterations.)
+            Teuchos::ParameterList              parameters;
+            std::unique_ptr<Epetra_MultiVector> unused;
+            data.set_parameters(parameters, unused, stiffness);
+            const Epetra_MultiVector modes =
+                rigid_body_modes(dof_handler, mapping, stiffness.trilinos_matrix().DomainMap());
+            parameters.set("null space: type", "pre-computed");
+            parameters.set("null space: dimension", modes.NumVectors());
+            parameters.set("null space: vectors", modes.Values());
+            amg.initialize(stiffness, parameters);
+          }
+        else
+          {
+            // In 2D the constant modes of the components (in the
+            // axisymmetric model only the shift along z is free of strain).
+            DoFTools::extract_constant_modes(dof_handler, ComponentMask(), data.constant_modes);
+            amg.initialize(stiffness, data);
+          }
       }
   }
 
@@ -258,7 +317,7 @@ namespace penny
     TimerOutput::Scope                   scope(timer, "assembly");
     TrilinosWrappers::MPI::Vector        rhs(owned, get_communicator());
     const QGauss<dim - 1>                face_quadrature(fe.degree + 2);
-    FEFaceValues<dim>                    fe_face(fe, face_quadrature,
+    FEFaceValues<dim>                    fe_face(mapping, fe, face_quadrature,
                                                  update_values | update_quadrature_points | update_JxW_values);
     const FEValuesExtractors::Vector     displacement(0);
     Vector<double>                       cell_rhs(fe.n_dofs_per_cell());
@@ -354,4 +413,5 @@ namespace penny
 
   template class LinearElasticSystem<Axisymmetric>;
   template class LinearElasticSystem<PlaneStrain>;
+  template class LinearElasticSystem<Solid>;
 } // namespace penny

@@ -4,7 +4,10 @@
 // its factorisation (or AMG preconditioner), and any number of right-hand
 // sides, each a traction on one boundary. Cells, degrees of freedom and the
 // Trilinos matrix are partitioned over the MPI ranks of the triangulation (the
-// step-40 pattern); one rank is the serial case.
+// step-40 pattern); one rank is the serial case. Cells are mapped with
+// polynomials of a chosen degree: 1 for straight-sided meshes, the element's
+// degree where cells follow a curved crack front (MappingQ takes the curved
+// positions from the triangulation's manifolds).
 #pragma once
 
 #include "fe/elasticity.h"
@@ -14,6 +17,7 @@
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/component_mask.h>
 #include <deal.II/fe/fe_system.h>
+#include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/tria.h>
 #include <deal.II/lac/affine_constraints.h>
 #include <deal.II/lac/sparse_direct.h>
@@ -58,7 +62,8 @@ namespace penny
     using Traction = std::function<double(const dealii::Point<dim> &)>;
 
     LinearElasticSystem(const dealii::Triangulation<dim> &triangulation, unsigned int degree,
-                        const MaterialParameters &material, const LinearSolverParameters &linear_solver,
+                        unsigned int mapping_degree, const MaterialParameters &material,
+                        const LinearSolverParameters &linear_solver,
                         std::vector<ZeroDisplacement> zero_displacements, dealii::TimerOutput &timer);
 
     // Distributes the degrees of freedom, assembles and factorises; again
@@ -78,6 +83,7 @@ namespace penny
     const SolveReport                &last_solve() const { return report; }
     const dealii::DoFHandler<dim>    &get_dof_handler() const { return dof_handler; }
     const dealii::FESystem<dim>      &get_fe() const { return fe; }
+    const dealii::Mapping<dim>       &get_mapping() const { return mapping; }
     const IsotropicElasticity        &get_elasticity() const { return elasticity; }
     const dealii::Triangulation<dim> &get_triangulation() const { return dof_handler.get_triangulation(); }
     MPI_Comm get_communicator() const { return get_triangulation().get_communicator(); }
@@ -98,6 +104,7 @@ namespace penny
                        const dealii::TrilinosWrappers::MPI::Vector &b);
 
     const dealii::FESystem<dim>         fe;
+    const dealii::MappingQ<dim>         mapping;
     const IsotropicElasticity           elasticity;
     const LinearSolverParameters        linear_solver;
     const std::vector<ZeroDisplacement> zero_displacements;

@@ -77,7 +77,7 @@ namespace penny
   PennyGapModel::PennyGapModel(const PennyGapModelParameters &parameters, TimerOutput &timer)
       : parameters(parameters), timer(timer),
         triangulation(parameters.communicator, Triangulation<2>::limit_level_difference_at_vertices),
-        system(meshed(triangulation, parameters, timer), parameters.degree, parameters.material,
+        system(meshed(triangulation, parameters, timer), parameters.degree, 1, parameters.material,
                parameters.linear_solver, zero_displacements(parameters.geometry), timer)
   {
   }

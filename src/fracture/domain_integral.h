@@ -15,6 +15,8 @@
 #include "fe/linear_elastic_system.h"
 #include "fracture/crack_extension.h"
 
+#include <vector>
+
 namespace penny
 {
   template <typename Kinematics> class DomainIntegral
@@ -44,6 +46,17 @@ namespace penny
     double signed_stress_intensity_factor(const DisplacementVector &u, const Traction &t,
                                           const DisplacementVector &u_ref, const Traction &t_ref,
                                           const CrackExtension<dim> &q) const;
+
+    // The same for many extensions (e.g. points along a 3D front) in one pass
+    // over the cells: each cell's field values are computed once for all the
+    // extensions that touch it. Each result equals that of the single-q call.
+    std::vector<double> bilinear(const DisplacementVector &u, const Traction &t_u,
+                                 const DisplacementVector &v, const Traction &t_v,
+                                 const std::vector<const CrackExtension<dim> *> &qs) const;
+    std::vector<double>
+    signed_stress_intensity_factors(const DisplacementVector &u, const Traction &t,
+                                    const DisplacementVector &u_ref, const Traction &t_ref,
+                                    const std::vector<const CrackExtension<dim> *> &qs) const;
 
   private:
     const LinearElasticSystem<Kinematics> &system;

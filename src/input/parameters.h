@@ -3,6 +3,7 @@
 // checked and written back, and a subsection it does not read is an error.
 #pragma once
 
+#include "input/elliptical_parameters.h"
 #include "input/fe_parameters.h"
 #include "input/random_surface_parameters.h"
 #include "input/scene_parameters.h"
@@ -48,6 +49,7 @@ namespace penny
     summit_statistics,
     bem_westergaard,
     random_contact,
+    elliptical_gap,
     fields,
     output
   };
@@ -87,6 +89,7 @@ namespace penny
     std::optional<SummitStatisticsParameters>     summit_statistics;
     std::optional<BemWestergaardParameters>       bem_westergaard;
     std::optional<RandomContactParameters>        random_contact;
+    std::optional<EllipticalGapParameters>        elliptical_gap;
     std::optional<FieldParameters>                fields;
     std::optional<OutputParameters>               output;
 

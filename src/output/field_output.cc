@@ -4,6 +4,7 @@
 #include "fe/boundary_ids.h"
 #include "fracture/sneddon_solution.h"
 #include "output/table.h"
+#include "output/vtu_writer.h"
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
@@ -110,37 +111,6 @@ namespace penny
       return flags;
     }
 
-    // DataOut that hands out one rank's piece of a VTU file: its cells, between
-    // the header and the footer.
-    class FieldPieces : public DataOut<2>
-    {
-    public:
-      std::string piece() const
-      {
-        std::ostringstream out;
-        DataOutBase::write_vtu_main(get_patches(), get_dataset_names(), get_nonscalar_data_ranges(),
-                                    field_vtk_flags(), out);
-        return out.str();
-      }
-    };
-
-    // Every rank builds the piece of its own cells; rank 0 gathers them into
-    // one VTU file and writes it, checked, into the result folder, with a PVD
-    // record beside it.
-    void write_vtu(const FieldPieces &data_out, const std::string &name, const ResultFolder &results,
-                   MPI_Comm comm)
-    {
-      const std::vector<std::string> pieces = Utilities::MPI::gather(comm, data_out.piece(), 0);
-      std::ostringstream             vtu;
-      DataOutBase::write_vtu_header(vtu, field_vtk_flags());
-      for (const std::string &piece : pieces)
-        vtu << piece;
-      DataOutBase::write_vtu_footer(vtu);
-      results.write(name + ".vtu", vtu.str());
-      std::ostringstream pvd;
-      DataOutBase::write_pvd_record(pvd, {{0., name + ".vtu"}});
-      results.write(name + ".pvd", pvd.str());
-    }
   } // namespace
 
   void write_fields(const LinearElasticSystem<Axisymmetric> &system, const DisplacementVector &displacement,
@@ -148,7 +118,7 @@ namespace penny
   {
     const auto        &dof_handler = system.get_dof_handler();
     const unsigned int degree      = system.get_fe().degree;
-    const auto         add_fields  = [&](FieldPieces &data_out, const FieldPostprocessor &fields) {
+    const auto         add_fields  = [&](VtuPieces<2> &data_out, const FieldPostprocessor &fields) {
       data_out.attach_dof_handler(dof_handler);
       data_out.add_data_vector(displacement, std::vector<std::string>(2, "u"), DataOut<2>::type_dof_data,
                                         std::vector<DataComponentInterpretation::DataComponentInterpretation>(
@@ -157,10 +127,10 @@ namespace penny
     };
 
     const FieldPostprocessor physical(system.get_elasticity(), ring, Point<2>(), 1);
-    FieldPieces              whole;
+    VtuPieces<2>             whole;
     add_fields(whole, physical);
     whole.build_patches(degree);
-    write_vtu(whole, "solution", results, system.get_communicator());
+    write_vtu(whole, "solution", field_vtk_flags(), results, system.get_communicator());
 
     // The tip frame: the same fields on the cells near the tip, drawn through
     // a mapping whose displacement is the affine map x -> (x - tip)/c.
@@ -170,14 +140,14 @@ namespace penny
     shift = owned_shift;
     const MappingQEulerian<2, DisplacementVector> tip_frame(degree, dof_handler, shift);
     const FieldPostprocessor                      in_tip_frame(system.get_elasticity(), ring, tip, tip[0]);
-    FieldPieces                                   near_tip;
+    VtuPieces<2>                                  near_tip;
     add_fields(near_tip, in_tip_frame);
     near_tip.set_cell_selection([&](const typename Triangulation<2>::cell_iterator &cell) {
       return cell->is_active() && cell->is_locally_owned() && std::abs(cell->center()[0] - tip[0]) < tip[0] &&
              cell->center()[1] < tip[0];
     });
     near_tip.build_patches(tip_frame, degree, DataOut<2>::curved_inner_cells);
-    write_vtu(near_tip, "solution-tip", results, system.get_communicator());
+    write_vtu(near_tip, "solution-tip", field_vtk_flags(), results, system.get_communicator());
   }
 
   void write_opening_profile(const LinearElasticSystem<Axisymmetric> &system,

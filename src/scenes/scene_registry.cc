@@ -5,6 +5,7 @@
 #include "input/input_error.h"
 #include "scenes/adhesion_scenes.h"
 #include "scenes/convergence_scene.h"
+#include "scenes/elliptical_scenes.h"
 #include "scenes/fe_gap_area_scene.h"
 #include "scenes/penny_gap_scene.h"
 #include "scenes/random_surface_scenes.h"
@@ -114,6 +115,15 @@ namespace penny
                      parameters.verification->tolerance);
     }
 
+    // K_I at every front point on every ring against Green-Sneddon/Irwin.
+    Verdict elliptical_gap_verdict(const Parameters &parameters, const ResultFolder &results,
+                                   std::ostream &log)
+    {
+      return verdict("largest relative error of K_I over the front points and rings",
+                     run_elliptical_gap_scene(parameters, results, log).largest_error,
+                     parameters.verification->tolerance);
+    }
+
     std::vector<std::string> scene_names()
     {
       std::vector<std::string> names;
@@ -215,6 +225,12 @@ namespace penny
         "1 - p_bar_max/p* against alpha beside 5 (alpha/4)^(4/5)",
         periodic_and({ S::jump_into_contact, S::verification }),
         jump_verdict },
+      {"elliptical-gap",
+       "one 3D FE solve (distributed) of an elliptical gap under uniform pressure: K_I(phi) at the front "
+       "points from front-localised J-integrals (signed), beside the Green-Sneddon/Irwin closed form",
+       {S::material, S::elliptical_gap, S::finite_element, S::linear_solver, S::fields, S::verification,
+        S::output},
+       elliptical_gap_verdict},
       {"zero-load-gap-area",
        "A_nc/A_0 at zero mean pressure against p0/sqrt(V) (paper Fig. 3)",
        {S::material, S::adhesion, S::roughness, S::area_load, S::zero_load_gap_area, S::output},

@@ -1,0 +1,128 @@
+#include "fracture/front_segment_extension.h"
+
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace penny
+{
+  using namespace dealii;
+
+  namespace
+  {
+    // k(t) = (1 - t^2)^4 (1 - 13 t^2/3) on |t| < 1 and its derivative:
+    // int t^2 k dt = 0, since int t^2 (1 - t^2)^4 / int t^4 (1 - t^2)^4 = 13/3.
+    std::pair<double, double> moment_free_bump(const double t)
+    {
+      if (std::abs(t) >= 1)
+        return {0., 0.};
+      const double s = 1 - t * t, s3 = s * s * s, c = 13. / 3;
+      return {s3 * s * (1 - c * t * t), -8 * t * s3 * (1 - c * t * t) - 2 * c * t * s3 * s};
+    }
+  } // namespace
+
+  FrontSegmentExtension::FrontSegmentExtension(const EllipticalFront &front, const double centre,
+                                               const double half_width, const double ring_radius)
+      : front(front), centre(centre), half_width(half_width), rho(ring_radius)
+  {
+    if (!(centre >= 0 && centre <= M_PI / 2))
+      throw std::invalid_argument("FrontSegmentExtension: the centre must lie in [0, pi/2]");
+    if (!(half_width > 0 && half_width <= M_PI / 2))
+      throw std::invalid_argument("FrontSegmentExtension: the half-width must lie in (0, pi/2]");
+    const double b = front.semi_axis_b(), a = front.semi_axis_a();
+    if (!(ring_radius > 0 && ring_radius < b * b / a))
+      throw std::invalid_argument("FrontSegmentExtension: the ring radius must lie in (0, b^2/a)");
+    // The support of f in [0, pi/2], split at the centre where k turns.
+    const auto   integrand = [&](const double phi) { return front_weight(phi) * front.arc_length_rate(phi); };
+    const double lo = std::max(0., centre - half_width), hi = std::min(M_PI / 2, centre + half_width);
+    using Rule = boost::math::quadrature::gauss_kronrod<double, 31>;
+    measure    = (centre > lo ? Rule::integrate(integrand, lo, centre, 15, 1e-14) : 0.) +
+              (hi > centre ? Rule::integrate(integrand, centre, hi, 15, 1e-14) : 0.);
+  }
+
+  // The bump and its images about the symmetry planes phi = 0 and phi = pi/2.
+  std::pair<double, double> FrontSegmentExtension::weight_and_slope(const double phi) const
+  {
+    double f = 0, df = 0;
+    for (const auto &[image, sign] : {std::pair{phi, 1.}, std::pair{-phi, -1.}, std::pair{M_PI - phi, -1.}})
+      {
+        const auto [k, dk] = moment_free_bump((image - centre) / half_width);
+        f += k;
+        df += sign * dk / half_width;
+      }
+    return {f, df};
+  }
+
+  double FrontSegmentExtension::front_weight(const double phi) const
+  {
+    return weight_and_slope(phi).first;
+  }
+
+  const EllipticalFront::Coordinates &FrontSegmentExtension::coordinates(const Point<3> &x) const
+  {
+    if (!(x == last_point))
+      {
+        last_point       = x;
+        last_coordinates = front.local_coordinates(x);
+      }
+    return last_coordinates;
+  }
+
+  Tensor<1, 3> FrontSegmentExtension::value(const Point<3> &x) const
+  {
+    const auto  &local = coordinates(x);
+    const double s     = 1 - (local.distance / rho) * (local.distance / rho);
+    if (s <= 0)
+      return {};
+    const double f = weight_and_slope(local.phi).first;
+    return f * s * s * s * s * front.unit_normal(local.phi);
+  }
+
+  // grad q = n (x) (f' w grad phi + f w' grad d) + f w dn/dphi (x) grad phi, with
+  // grad phi = t/(|dx/dphi| (1 + kappa h)) (h the signed in-plane distance,
+  // positive outside the ellipse), grad d = (x - x_front)/d, dn/dphi = kappa |dx/dphi| t.
+  Tensor<2, 3> FrontSegmentExtension::gradient(const Point<3> &x) const
+  {
+    const auto  &local = coordinates(x);
+    const double s     = 1 - (local.distance / rho) * (local.distance / rho);
+    if (s <= 0)
+      return {};
+    const auto [f, df] = weight_and_slope(local.phi);
+    if (f == 0 && df == 0)
+      return {};
+    const double       phi = local.phi, speed = front.arc_length_rate(phi), kappa = front.curvature(phi);
+    const double       w = s * s * s * s;
+    const Tensor<1, 3> n = front.unit_normal(phi), tangent = front.unit_tangent(phi);
+    const Tensor<1, 3> grad_phi = tangent / (speed * (1 + kappa * local.distance * std::cos(local.theta)));
+    // w' grad d = -8 s^3 d/rho^2 (x - x_front)/d, without the division.
+    const Tensor<1, 3> w_grad_d = -8 * s * s * s / (rho * rho) * (x - front.point(phi));
+    return outer_product(n, df * w * grad_phi + f * w_grad_d) +
+           f * w * kappa * speed * outer_product(tangent, grad_phi);
+  }
+
+  // A cell may meet the support when its centre lies within rho plus its
+  // diameter of the front arc where f is not zero.
+  bool FrontSegmentExtension::may_touch(const Triangulation<3>::cell_iterator &cell) const
+  {
+    const Point<3> x     = cell->center();
+    const double   reach = rho + cell->diameter();
+    const auto     local = front.local_coordinates(x);
+    const double   lo = std::max(0., centre - half_width), hi = std::min(M_PI / 2, centre + half_width);
+    if (local.distance > reach)
+      return false;
+    if (local.phi >= lo && local.phi <= hi)
+      return true;
+    return std::min(x.distance(front.point(lo)), x.distance(front.point(hi))) <= reach;
+  }
+
+  // The distance d from the front is 1-Lipschitz: over a box of half-diagonal
+  // r around its centre it stays within r of d(centre).
+  bool FrontSegmentExtension::edge_crosses(const BoundingBox<3> &box) const
+  {
+    const auto  &corners       = box.get_boundary_points();
+    const double half_diagonal = corners.first.distance(corners.second) / 2;
+    return std::abs(front.local_coordinates(box.center()).distance - rho) <= half_diagonal;
+  }
+} // namespace penny

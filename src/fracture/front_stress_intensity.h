@@ -1,0 +1,49 @@
+// K_I(phi) along the front of an elliptical-gap model: one
+// FrontSegmentExtension per front point and ring, all evaluated by the one
+// domain integral (fracture/domain_integral.h), and the signed K_I from the
+// polarised form with a reference solution of unit pressure.
+#pragma once
+
+#include "fe/elliptical_gap_model.h"
+#include "fracture/domain_integral.h"
+#include "fracture/front_segment_extension.h"
+
+#include <vector>
+
+namespace penny
+{
+  // n points 0 = phi_0 < ... < phi_(n-1) = pi/2, evenly spaced in the parametric angle.
+  std::vector<double> front_point_angles(unsigned int n);
+
+  class FrontStressIntensity
+  {
+  public:
+    // Extensions at `angles`, each of half-width `half_width_cells` front
+    // cells of the model's mesh, on every ring of `ring_radii` (in units of
+    // the smallest radius of curvature of the front, b^2/a).
+    FrontStressIntensity(const EllipticalGapModel &model, const std::vector<double> &angles,
+                         double half_width_cells, const std::vector<double> &ring_radii);
+
+    // Signed K_I (Pa m^1/2) of u under the traction t, per ring and point:
+    // E' B(u, u_ref)/K_ref with u_ref the displacement under the traction
+    // t_ref > 0 (e.g. unit pressure), K_ref = sqrt(E' B(u_ref, u_ref)).
+    std::vector<std::vector<double>> signed_sifs(const DisplacementVector           &u,
+                                                 const EllipticalGapModel::Traction &t,
+                                                 const DisplacementVector           &u_ref,
+                                                 const EllipticalGapModel::Traction &t_ref) const;
+
+    const std::vector<double> &get_angles() const { return angles; }
+    // The extension of point i on ring r.
+    const FrontSegmentExtension &extension(unsigned int ring, unsigned int i) const
+    {
+      return extensions[ring][i];
+    }
+    double half_width() const { return half_width_angle; }
+
+  private:
+    const DomainIntegral<Solid>                     j_integral;
+    const std::vector<double>                       angles;
+    double                                          half_width_angle;
+    std::vector<std::vector<FrontSegmentExtension>> extensions;
+  };
+} // namespace penny

@@ -1,0 +1,31 @@
+// Parameters of the 3D elliptical-gap model and of its scene
+// (doc/theory.md, section 7): the gap, its load, the mesh and the front
+// J-integrals, in the subsection "Elliptical gap".
+#pragma once
+
+#include <deal.II/base/parameter_handler.h>
+
+#include <vector>
+
+namespace penny
+{
+  struct EllipticalGapParameters
+  {
+    double              semi_axis_a;        // a (m)
+    double              aspect_ratio;       // b/a, in (0, 1]
+    double              pressure;           // p (Pa), uniform on the gap faces
+    double              box_width;          // R/a
+    double              box_height;         // H/a
+    unsigned int        cells_along_front;  // edges of the quarter front (even)
+    unsigned int        sectors;            // sectors around the front (multiple of 4)
+    double              front_cell_size;    // innermost ring, in units of b
+    double              ring_ratio;         // of successive rings around the front
+    unsigned int        global_refinements; // of the coarse mesh
+    unsigned int        front_points;       // K_I at phi = i pi/(2 (n - 1)), i = 0 ... n - 1
+    double              weight_half_width;  // of the front weight, in front cells
+    std::vector<double> ring_radii;         // in units of b^2/a
+
+    static void declare(dealii::ParameterHandler &prm);
+    void        parse(dealii::ParameterHandler &prm);
+  };
+} // namespace penny
