@@ -1,6 +1,6 @@
 // The finite-element model of one elliptical gap: 3D linear elasticity on the
 // quarter x, y, z >= 0 of a box around the flat gap x^2/a^2 + y^2/b^2 < 1 on
-// z = 0 (doc/theory.md, section 7). u_x = 0 on the symmetry plane x = 0,
+// z = 0 (doc/theory.md, section 8). u_x = 0 on the symmetry plane x = 0,
 // u_y = 0 on y = 0, u_z = 0 on the ligament, the face traction t(x, y) on
 // the gap face, the far faces free. The mesh (fe/elliptical_gap_mesh.h) has
 // the front as a line of mesh edges on a manifold and is graded towards it in

@@ -19,7 +19,7 @@ namespace penny
     // load that is NaN or Inf somewhere on the face or zero everywhere.
     FaceLoad(const LoadParameters &load, double gap_radius);
 
-    // The unit load cases of physics.md section 1: p = 1 Pa and p = r^2 (Pa/m^2).
+    // The unit load cases of doc/theory.md, section 1: p = 1 Pa and p = r^2 (Pa/m^2).
     static FaceLoad unit_uniform();
     static FaceLoad unit_quadratic();
 

@@ -65,7 +65,7 @@ namespace penny
   // The traction of w = sqrt(1 - x^2/a^2 - y^2/b^2) q(x, y) inside the ellipse
   // for q = 1, x^2, y^2 (the columns), as coefficients of 1, x^2, y^2 (the
   // rows). With A = a^2 + u, B = b^2 + u, X = x^2/A + y^2/B, the layer
-  // potentials are (doc/theory.md, section 7)
+  // potentials are (doc/theory.md, section 8)
   //   q = 1:    (pi a b/2) int (1 - X) du/sqrt(A B u),
   //   q = x^2:  (pi b a^4/4) d/d(a^2) [a int (1 - X)^2 du/sqrt(A B u)],
   // and y^2 with the roles of (a, x) and (b, y) exchanged; the Laplacian

@@ -51,7 +51,7 @@ namespace penny
   };
 
   // The same elliptical crack under any QuadraticTraction (doc/theory.md,
-  // section 7). By Galin's theorem the opening of one face is
+  // section 8). By Galin's theorem the opening of one face is
   //   w = sqrt(1 - x^2/a^2 - y^2/b^2) (C_0 + C_1 x^2 + C_2 y^2),
   // and the face traction of such a w inside the ellipse,
   // t = -(E'/(4 pi)) Laplacian int w(s)/|x - s| ds, is quadratic again: the

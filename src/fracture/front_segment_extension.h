@@ -1,5 +1,5 @@
 // The virtual crack extension of the 3D domain integral localised on a
-// segment of the elliptical front (doc/theory.md, section 7):
+// segment of the elliptical front (doc/theory.md, section 8):
 //
 //   q(x) = f(phi) w(d) n(phi),
 //

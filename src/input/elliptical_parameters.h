@@ -1,5 +1,5 @@
 // Parameters of the 3D elliptical-gap model and of its scene
-// (doc/theory.md, section 7): the gap, its load, the mesh and the front
+// (doc/theory.md, section 8): the gap, its load, the mesh and the front
 // J-integrals, in the subsection "Elliptical gap".
 #pragma once
 

@@ -1,4 +1,4 @@
-// Parameters of the scenes on sampled random surfaces (physics.md section 8):
+// Parameters of the scenes on sampled random surfaces (doc/theory.md, section 7):
 // the grid and realisations, the summit statistics, the boundary-element
 // check on Westergaard's sinusoid and the contact of random surfaces.
 #pragma once

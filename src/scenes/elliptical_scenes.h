@@ -1,4 +1,4 @@
-// The scenes of the 3D elliptical-gap model (doc/theory.md, section 7): one
+// The scenes of the 3D elliptical-gap model (doc/theory.md, section 8): one
 // gap under uniform pressure, K_I(phi) along its front from the
 // front-localised domain integral beside the Green-Sneddon/Irwin closed form.
 #pragma once

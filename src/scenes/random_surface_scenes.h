@@ -1,4 +1,4 @@
-// Scenes on sampled random surfaces (physics.md section 8, no FE): summit
+// Scenes on sampled random surfaces (doc/theory.md, section 7, no FE): summit
 // statistics of the full-contact pressure over realisations, the FFT
 // boundary-element solver on Westergaard's sinusoid, and the non-contact area
 // of random surfaces near full contact beside the layer's laws.

@@ -1,4 +1,4 @@
-// From single gaps to area-load curves (physics.md section 4). Each tensile
+// From single gaps to area-load curves (doc/theory.md, section 4). Each tensile
 // summit of the full-contact pressure, of peak P = p - p_bar above the mean
 // pressure p_bar, holds a gap of area pi c_t(P)^2; summed over the Gaussian
 // summit heights,

@@ -1,7 +1,7 @@
 // Frictionless, adhesionless contact of a rigid periodic rough surface h(x, y)
 // (m) with an elastic half-space of plane-strain modulus E* (Pa) at a
 // prescribed mean pressure p_bar (Pa), by the FFT-based boundary-element
-// method (physics.md section 8). The half-space's surface displacement under
+// method (doc/theory.md, section 7). The half-space's surface displacement under
 // a periodic pressure is u^_q = 2 p^_q/(E* |q|) (q != 0; the mean displacement
 // is the rigid-body approach and drops out), and the solution is the pressure
 // p >= 0 with mean p_bar and gap g = u - h + const >= 0, p g = 0: the minimiser

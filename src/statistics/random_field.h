@@ -1,4 +1,4 @@
-// Gaussian random fields on a periodic grid (physics.md section 8): a field
+// Gaussian random fields on a periodic grid (doc/theory.md, section 7): a field
 // h(x, y) with isotropic power spectral density C(q) (heights in m, C in m^4,
 // wavenumbers in 1/m) sampled by FFT, its spectral derivatives, its sampled
 // mean squares beside their expectation for the discrete spectrum and the

@@ -1,4 +1,4 @@
-// Isotropic Gaussian rough surfaces (physics.md sections 4 and 5): the power
+// Isotropic Gaussian rough surfaces (doc/theory.md, section 4): the power
 // spectral density C(q) of the heights, its moments, and the statistics of the
 // full-contact pressure field whose tensile summits are the gaps.
 #pragma once
@@ -36,7 +36,7 @@ namespace penny
   };
   SpectralMoments spectral_moments(const PowerSpectrum &spectrum);
 
-  // Which normalisations turn moments into summit statistics (physics.md section 5).
+  // Which normalisations turn moments into summit statistics (doc/theory.md, section 4).
   enum class Convention
   {
     paper,     // V = E*^2 m2/4, eta = m6/(6 sqrt(pi) m4), R_p = 0.375 sqrt(2 pi/m6)/E*

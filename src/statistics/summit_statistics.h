@@ -1,5 +1,5 @@
 // Summits of a random field on a periodic grid and their statistics over
-// realisations (physics.md sections 5 and 8), beside their expectation for a
+// realisations (doc/theory.md, sections 4 and 7), beside their expectation for a
 // Gaussian field (Nayak's 1971 closed forms when the spectrum is isotropic).
 // For the full-contact pressure the heights are in Pa, the curvatures in
 // Pa/m^2 and the densities in 1/m^2; the same code serves any field (heights
@@ -121,7 +121,7 @@ namespace penny
   double summit_height_density(const FieldMoments &moments, double height);
   double summit_mean_curvature_at(const FieldMoments &moments, double height);
 
-  // The layer's adhesionless isolated-gap law (physics.md section 1: a summit
+  // The layer's adhesionless isolated-gap law (doc/theory.md, section 1: a summit
   // of peak tension P = z - p_bar > 0 holds a penny gap of area 3 pi R_p P)
   // summed over the summits of a Gaussian tension field with these moments,
   // each with its own height and R_p = 1/kappa, kappa its mean curvature:
