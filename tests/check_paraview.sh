@@ -9,8 +9,18 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 "$penny" "$scene" > /dev/null
-timeout 300 xvfb-run -a -s "-screen 0 1280x1024x24" pvpython "$script" fields pictures > pictures.log 2>&1 ||
-  { echo "FAIL: pvpython"; tail -20 pictures.log; exit 1; }
+# Xvfb now and then fails to give pvpython a window when the suite runs
+# tests in parallel (ParaView aborts in vtkXOpenGLRenderWindow::CreateAWindow;
+# seen twice in about fifteen runs): up to three tries, each reported.
+for attempt in 1 2 3; do
+  if timeout 300 xvfb-run -a -e xvfb.log -s "-screen 0 1280x1024x24" pvpython "$script" fields pictures \
+    > pictures.log 2>&1; then
+    break
+  fi
+  echo "pvpython try $attempt failed:"
+  grep -m 5 -E "ERR|FATL|error|Error" pictures.log xvfb.log || tail -5 pictures.log
+  [ $attempt -lt 3 ] || { echo "FAIL: pvpython"; exit 1; }
+done
 /usr/bin/python3 - pictures picture-von-mises.png picture-sigma-zz-1e-2.png picture-sigma-zz-1e-6.png \
   picture-opening.png <<'PY'
 import pathlib
