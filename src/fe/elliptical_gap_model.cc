@@ -63,18 +63,9 @@ namespace penny
     return penny::front_vertex_angles(triangulation, parameters.mesh);
   }
 
-  // (0, 0, 0) is a vertex: its u_z is a degree of freedom, read on the rank that owns it.
   double EllipticalGapModel::opening_at_centre(const DisplacementVector &u) const
   {
-    const auto &dof_handler = system.get_dof_handler();
-    double      opening     = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
-          if (cell->vertex(v).norm() == 0 &&
-              dof_handler.locally_owned_dofs().is_element(cell->vertex_dof_index(v, 2)))
-            opening = u(cell->vertex_dof_index(v, 2));
-    return Utilities::MPI::sum(opening, triangulation.get_communicator());
+    return system.normal_displacement_at_origin(u);
   }
 
   double EllipticalGapModel::gap_volume(const DisplacementVector &u) const

@@ -81,6 +81,19 @@ namespace penny
     factorise();
   }
 
+  template <typename Kinematics>
+  double LinearElasticSystem<Kinematics>::normal_displacement_at_origin(const DisplacementVector &u) const
+  {
+    double value = 0;
+    for (const auto &cell : dof_handler.active_cell_iterators())
+      if (cell->is_locally_owned())
+        for (const unsigned int v : cell->vertex_indices())
+          if (cell->vertex(v).norm() == 0 &&
+              dof_handler.locally_owned_dofs().is_element(cell->vertex_dof_index(v, dim - 1)))
+            value = u(cell->vertex_dof_index(v, dim - 1));
+    return Utilities::MPI::sum(value, get_communicator());
+  }
+
   template <typename Kinematics> std::string LinearElasticSystem<Kinematics>::solver_name() const
   {
     if (linear_solver.type == LinearSolverParameters::Type::cg_amg)

@@ -94,6 +94,10 @@ namespace penny
     // "UMFPACK" (one MPI rank), "MUMPS" (several) or "CG + AMG".
     std::string solver_name() const;
 
+    // The last component of u (u_z) at the origin, which must be a vertex:
+    // read on the rank that owns that degree of freedom, known on every rank.
+    double normal_displacement_at_origin(const DisplacementVector &u) const;
+
   private:
     void distribute_and_constrain();
     void assemble_matrix();
