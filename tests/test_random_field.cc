@@ -173,7 +173,7 @@ BOOST_AUTO_TEST_CASE(sampled_moments_within_four_standard_errors)
 
 BOOST_AUTO_TEST_CASE(realisations_gathered_in_index_order)
 {
-  const auto rows = gather_realisations(
+  const auto rows = spread_over_ranks(
       MPI_COMM_WORLD, 5, [](unsigned int index) { return std::vector<double>(index, double(index)); });
   BOOST_TEST_REQUIRE(rows.size() == 5u);
   for (unsigned int index = 0; index < 5; ++index)

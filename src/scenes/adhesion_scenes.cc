@@ -4,6 +4,7 @@
 #include "fracture/gap_searches.h"
 #include "output/table.h"
 #include "scenes/scene_support.h"
+#include "statistics/realisations.h"
 
 #include <cmath>
 
@@ -96,15 +97,16 @@ namespace penny
     const auto          c_hat_at = [&](const unsigned int i) {
       return range.smallest_c_hat + i * (range.largest_c_hat - range.smallest_c_hat) / (range.n_points - 1);
     };
-    const std::vector<UnitLoadSifs> sifs =
-        spread_over_ranks<UnitLoadSifs>(range.n_points, [&](const unsigned int i) {
-          return search.gaps.unit_load_sifs(c_hat_at(i) * c_min);
-        });
-    double worst = 0;
+    // One row (K_uniform, K_quadratic) per point.
+    const auto sifs  = spread_over_ranks(MPI_COMM_WORLD, range.n_points, [&](const unsigned int i) {
+      const UnitLoadSifs K = search.gaps.unit_load_sifs(c_hat_at(i) * c_min);
+      return std::vector<double>{K.uniform, K.quadratic};
+    });
+    double     worst = 0;
     for (unsigned int i = 0; i < range.n_points; ++i)
       {
         const double       c_hat  = c_hat_at(i);
-        const UnitLoadSifs K      = sifs[i];
+        const UnitLoadSifs K      = {sifs[i][0], sifs[i][1]};
         const double       p_fe   = (K_Ic + K.quadratic / (2 * R_p)) / K.uniform / p0;
         const double       exact  = (c_hat * c_hat + 4 / std::sqrt(c_hat)) / 5;
         const double       linear = c_hat * c_hat > 2.5 ? c_hat * c_hat / 5 + 0.5 : 1.;

@@ -5,6 +5,7 @@
 #include "output/table.h"
 #include "scenes/scene_support.h"
 #include "statistics/contact_area.h"
+#include "statistics/realisations.h"
 
 #include <cmath>
 
@@ -36,14 +37,14 @@ namespace penny
     Table               gap_table({{"P/sqrtV"}, {"c_t FE (m)"}, {"c_t closed form (m)"}, {"relative error"}});
     // fe_P[0] sqrt(V) may round a hair below the FE p0.
     const auto tension = [&](const unsigned int j) { return std::max(fe_P[j] * sqrt_V, minimum.tension); };
-    const std::vector<double> radii = spread_over_ranks<double>(fe_P.size(), [&](const unsigned int j) {
-      return *fe_stable_gap_radius(search.gaps, tension(j), R_p, K_Ic, minimum);
+    const auto radii   = spread_over_ranks(MPI_COMM_WORLD, fe_P.size(), [&](const unsigned int j) {
+      return std::vector<double>{*fe_stable_gap_radius(search.gaps, tension(j), R_p, K_Ic, minimum)};
     });
-    double                    worst_radius = 0;
+    double     worst_radius = 0;
     for (unsigned int j = 0; j < fe_P.size(); ++j)
       {
         const double P  = tension(j);
-        const double c  = radii[j];
+        const double c  = radii[j][0];
         const double c0 = *closed_form::stable_gap_radius(std::max(P, p0), R_p, K_Ic);
         fe_areas.push_back(c * c / (3 * R_p * sqrt_V));
         exact_areas.push_back(exact(exact_P[j]));

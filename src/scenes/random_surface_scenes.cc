@@ -160,7 +160,7 @@ namespace penny
           const double         sqrt_V           = std::sqrt(pressure_lattice.expected.m0);
           const HeightBins     bins{-2 * sqrt_V, 4 * sqrt_V, settings.n_height_bins};
 
-          const auto rows = gather_realisations(MPI_COMM_WORLD, surfaces.n_realisations, [&](unsigned int k) {
+          const auto rows = spread_over_ranks(MPI_COMM_WORLD, surfaces.n_realisations, [&](unsigned int k) {
             const GridField     h  = gaussian_field(transform, spectrum, realisation_seed(surfaces.seed, k));
             const GridField     p  = full_contact_pressure(transform, h, E_star);
             const FieldMoments  mh = sampled_moments(transform, h), mp = sampled_moments(transform, p);
@@ -374,9 +374,9 @@ namespace penny
       loads.push_back(p * sqrt_V);
 
     dealii::Timer timer;
-    const auto    rows = gather_realisations(MPI_COMM_WORLD, surfaces.n_realisations, [&](unsigned int k) {
+    const auto    rows      = spread_over_ranks(MPI_COMM_WORLD, surfaces.n_realisations, [&](unsigned int k) {
       const HalfSpaceContact contact(
-             transform, gaussian_field(transform, spectrum, realisation_seed(surfaces.seed, k)), E_star);
+                  transform, gaussian_field(transform, spectrum, realisation_seed(surfaces.seed, k)), E_star);
       std::vector<double> row(2 * n_loads);
       const auto steps = load_sweep(contact, loads, {settings.max_iterations, settings.solver_tolerance});
       for (std::size_t l = 0; l < n_loads; ++l)

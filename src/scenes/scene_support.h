@@ -9,14 +9,11 @@
 #include "output/progress.h"
 #include "output/table.h"
 
-#include <deal.II/base/mpi.h>
 #include <deal.II/base/timer.h>
 
 #include <cmath>
-#include <cstring>
 #include <ostream>
 #include <string>
-#include <type_traits>
 #include <vector>
 
 namespace penny
@@ -53,7 +50,8 @@ namespace penny
   // progress line as the solves go. Every model lives on one rank
   // (MPI_COMM_SELF): a search is sequential, so each rank runs it alike, and a
   // sweep of independent searches gives each rank its share
-  // (spread_over_ranks). The results do not depend on the number of ranks.
+  // (spread_over_ranks, statistics/realisations.h). The results do not
+  // depend on the number of ranks.
   struct GapSearch
   {
     GapSearch(const Parameters &parameters, std::ostream &log);
@@ -68,26 +66,4 @@ namespace penny
     const double        summit_radius;             // R_p (m^2/Pa)
     const double        critical_stress_intensity; // K_Ic (Pa m^1/2); 0 without an Adhesion section
   };
-
-  // f(0), ..., f(n - 1) on every rank: rank k evaluates the i with
-  // i mod (number of ranks) = k, and the values are gathered. T must be
-  // trivially copyable.
-  template <typename T, typename F> std::vector<T> spread_over_ranks(const unsigned int n, const F &f)
-  {
-    static_assert(std::is_trivially_copyable_v<T>, "the values travel between ranks as bytes");
-    const unsigned int ranks = dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD);
-    const unsigned int rank  = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD);
-    std::vector<char>  mine;
-    for (unsigned int i = rank; i < n; i += ranks)
-      {
-        const T value = f(i);
-        mine.insert(mine.end(), reinterpret_cast<const char *>(&value),
-                    reinterpret_cast<const char *>(&value) + sizeof(T));
-      }
-    const auto     shares = dealii::Utilities::MPI::all_gather(MPI_COMM_WORLD, mine);
-    std::vector<T> all(n);
-    for (unsigned int i = 0; i < n; ++i)
-      std::memcpy(&all[i], shares[i % ranks].data() + (i / ranks) * sizeof(T), sizeof(T));
-    return all;
-  }
 } // namespace penny

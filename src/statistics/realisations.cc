@@ -5,17 +5,17 @@ namespace penny
   // Each rank packs its rows as (index, length, values...) into one buffer;
   // every rank gathers all buffers (MPI_Allgatherv) and unpacks them by index.
   std::vector<std::vector<double>>
-  gather_realisations(MPI_Comm communicator, const unsigned int n_realisations,
-                      const std::function<std::vector<double>(unsigned int)> &realisation)
+  spread_over_ranks(MPI_Comm communicator, const unsigned int n,
+                    const std::function<std::vector<double>(unsigned int)> &piece)
   {
     int rank = 0, size = 1;
     MPI_Comm_rank(communicator, &rank);
     MPI_Comm_size(communicator, &size);
 
     std::vector<double> packed;
-    for (unsigned int index = rank; index < n_realisations; index += size)
+    for (unsigned int index = rank; index < n; index += size)
       {
-        const std::vector<double> row = realisation(index);
+        const std::vector<double> row = piece(index);
         packed.push_back(index);
         packed.push_back(row.size());
         packed.insert(packed.end(), row.begin(), row.end());
@@ -31,7 +31,7 @@ namespace penny
                    communicator);
 
     std::vector<std::vector<double>> rows;
-    rows.resize(n_realisations);
+    rows.resize(n);
     for (std::size_t position = 0; position < all.size();)
       {
         const std::size_t index = all[position], row_length = all[position + 1];
