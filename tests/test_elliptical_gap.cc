@@ -7,7 +7,9 @@
 #define BOOST_TEST_MODULE elliptical_gap
 #define BOOST_TEST_NO_MAIN
 #include "fracture/elliptical_crack.h"
+#include "fracture/elliptical_summits.h"
 #include "fracture/front_segment_extension.h"
+#include "fracture/front_stress_intensity.h"
 #include "scenes/elliptical_scenes.h"
 #include "test_support.h"
 
@@ -38,24 +40,34 @@ namespace
     return sum * h / 3;
   }
 
-  // 144 cells, 4515 DoFs at degree 2: K_I within about 6e-2 (measured 5.6e-2).
-  Parameters test_size_parameters(const double pressure)
+  // The parameters of `scene` with a test-size model: box 10 a, 4 cells along
+  // the front, rings from 1e-2 b at ratio 2.5, degree 2, the direct solver.
+  Parameters test_size(const std::string &scene, const unsigned int sectors,
+                       const std::vector<double> &ring_radii)
   {
-    Parameters parameters             = default_parameters("elliptical-gap");
-    auto      &gap                    = *parameters.elliptical_gap;
-    gap.aspect_ratio                  = 0.5;
-    gap.pressure                      = pressure;
-    gap.box_width                     = 10;
-    gap.box_height                    = 10;
-    gap.cells_along_front             = 4;
-    gap.sectors                       = 4;
-    gap.front_cell_size               = 0.01;
-    gap.ring_ratio                    = 2.5;
-    gap.front_points                  = 3;
-    gap.weight_half_width             = 1;
-    gap.ring_radii                    = {0.2, 0.4};
+    Parameters parameters             = default_parameters(scene);
+    auto      &model                  = *parameters.elliptical_model;
+    model.box_width                   = 10;
+    model.box_height                  = 10;
+    model.cells_along_front           = 4;
+    model.sectors                     = sectors;
+    model.front_cell_size             = 0.01;
+    model.ring_ratio                  = 2.5;
+    model.weight_half_width           = 1;
+    model.ring_radii                  = ring_radii;
     parameters.finite_element->degree = 2;
     parameters.linear_solver->type    = LinearSolverParameters::Type::direct;
+    return parameters;
+  }
+
+  // 144 cells, 4515 DoFs: K_I within about 6e-2 (measured 5.6e-2).
+  Parameters test_size_parameters(const double pressure)
+  {
+    Parameters parameters = test_size("elliptical-gap", 4, {0.2, 0.4});
+    auto      &gap        = *parameters.elliptical_gap;
+    gap.aspect_ratio      = 0.5;
+    gap.pressure          = pressure;
+    gap.front_points      = 3;
     return parameters;
   }
 } // namespace
@@ -165,6 +177,24 @@ BOOST_AUTO_TEST_CASE(uniform_pressure_of_either_sign)
     }
 }
 
+// The circle b = a beside the axisymmetric model of the same gap: that model
+// is within 2e-3 of Sneddon's 2 p sqrt(a/pi) (the free cylinder R = H = 10 a
+// raises K_I by 1.1e-3), the test-size 3D model within its 6e-2.
+BOOST_AUTO_TEST_CASE(circle_against_the_axisymmetric_model)
+{
+  Parameters parameters                   = test_size_parameters(1e6);
+  parameters.elliptical_gap->aspect_ratio = 1;
+  const ScratchFolder        scratch;
+  ResultFolder               results(scratch.path / "elliptical-gap", {});
+  const EllipticalGapResults solved = run_elliptical_gap_scene(parameters, results, std::cout);
+  BOOST_TEST(solved.axisymmetric_sifs.size() == solved.angles.size());
+  for (unsigned int i = 0; i < solved.angles.size(); ++i)
+    {
+      BOOST_TEST(solved.axisymmetric_sifs[i] == solved.exact_sifs[i], tt::tolerance(2e-3));
+      BOOST_TEST(solved.signed_sifs.back()[i] == solved.axisymmetric_sifs[i], tt::tolerance(6e-2));
+    }
+}
+
 // Galin's quadratic tractions: the uniform one is Green and Sneddon's, and on
 // the circle t = x^2 + y^2 = r^2 gives Sneddon's
 // K_I = 2/sqrt(pi c) int_0^c r^3/sqrt(c^2 - r^2) dr = 4 c^(5/2)/(3 sqrt(pi)).
@@ -182,4 +212,59 @@ BOOST_AUTO_TEST_CASE(galin_tractions_against_known_cases)
   for (const double phi : {0., 0.4, 1., M_PI / 2})
     BOOST_TEST(squared_radius.stress_intensity_factor(phi) == 4 * std::pow(c, 2.5) / (3 * std::sqrt(M_PI)),
                tt::tolerance(1e-10));
+}
+
+// The summit searches on Galin's closed form: the circle gives the
+// axisymmetric constants (c/A = sqrt(3/2), area ratio 3/2, psi); an ellipse
+// found without adhesion has K_I = 0 along its whole front; the adhesive gap
+// is a minimum of P over the shapes with K_I = K_Ic at both ends.
+BOOST_AUTO_TEST_CASE(summit_searches_on_the_closed_form)
+{
+  const EllipticalGapSifs     galin  = galin_unit_load_sifs;
+  const AdhesionlessSummitGap circle = find_adhesionless_summit_gap(galin, 1);
+  BOOST_TEST(circle.a_over_Ax == std::sqrt(1.5), tt::tolerance(1e-10));
+  BOOST_TEST(circle.area_ratio == 1.5, tt::tolerance(1e-10));
+  BOOST_TEST(find_adhesive_summit_minimum(galin, 1, 1).tension == 1.2020809449045589, tt::tolerance(1e-10));
+
+  const double                rho = 0.5;
+  const AdhesionlessSummitGap gap = find_adhesionless_summit_gap(galin, rho);
+  BOOST_TEST(gap.tension_aspect_ratio == rho, tt::tolerance(1e-5));
+  BOOST_TEST(gap.aspect_ratio > rho); // the gap is rounder than its tension region
+  for (const auto &K : galin(gap.aspect_ratio, front_point_angles(7)))
+    BOOST_TEST(std::abs(gap.relative_sif(K)) < 1e-9);
+
+  const AdhesiveSummitGap adhesive = find_adhesive_summit_minimum(galin, rho, gap.aspect_ratio);
+  for (const double phi : {0., M_PI / 2})
+    BOOST_TEST(adhesive.relative_sif(galin(adhesive.aspect_ratio, {phi})[0]) == 1., tt::tolerance(1e-10));
+  for (const double step : {-0.02, 0.02})
+    {
+      const double s = adhesive.aspect_ratio + step;
+      const auto   K = galin(s, {0., M_PI / 2});
+      BOOST_TEST(adhesive_gap(s, rho, {{K[0], K[1]}}).tension > adhesive.tension);
+    }
+  BOOST_TEST(adhesive.tension > 1.2020809449045589);
+}
+
+// The scene at test size (cells 4 along and 8 around the front, degree 2;
+// about 40 small models): FE within 5e-2 of the closed form for the circle
+// and Ay/Ax = 0.5, and its result files.
+BOOST_AUTO_TEST_CASE(elliptical_summits_scene_at_test_size)
+{
+  Parameters parameters                                = test_size("elliptical-summits", 8, {0.2});
+  parameters.elliptical_summits->tension_aspect_ratios = {1, 0.5};
+  parameters.elliptical_summits->front_points          = 3;
+  const ScratchFolder            scratch;
+  ResultFolder                   results(scratch.path / "elliptical-summits", {});
+  const EllipticalSummitsResults solved = run_elliptical_summits_scene(parameters, results, std::cout);
+  results.commit();
+  BOOST_TEST(solved.largest_error < 5e-2);
+  for (unsigned int k = 0; k < 2; ++k)
+    {
+      BOOST_TEST(solved.fe[k].adhesionless.area_ratio == solved.exact[k].adhesionless.area_ratio,
+                 tt::tolerance(5e-2));
+      BOOST_TEST(solved.fe[k].adhesive.tension == solved.exact[k].adhesive.tension, tt::tolerance(5e-2));
+    }
+  BOOST_TEST(solved.exact[0].adhesive.tension == 1.2020809449045589, tt::tolerance(1e-10));
+  for (const std::string file : {"adhesionless.csv", "adhesive.csv", "front.csv", "summary.csv"})
+    BOOST_TEST(std::filesystem::is_regular_file(results.directory() / file), file);
 }

@@ -36,15 +36,6 @@ namespace penny
     }
   } // namespace
 
-  EllipticalGapModelParameters EllipticalGapModelParameters::with_semi_axes(const double a,
-                                                                            const double b) const
-  {
-    EllipticalGapModelParameters scaled = *this;
-    scaled.mesh.semi_axis_a             = a;
-    scaled.mesh.semi_axis_b             = b;
-    return scaled;
-  }
-
   EllipticalGapModel::EllipticalGapModel(const EllipticalGapModelParameters &parameters, TimerOutput &timer)
       : parameters(parameters), timer(timer), triangulation(MPI_COMM_WORLD),
         system(meshed(triangulation, parameters, timer), parameters.degree, parameters.degree,

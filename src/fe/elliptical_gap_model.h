@@ -29,10 +29,6 @@ namespace penny
     MaterialParameters          material;
     unsigned int                degree;
     LinearSolverParameters      linear_solver;
-
-    // The same model for semi-axes (a, b): the box stays R/a and H/a, the
-    // innermost ring stays front_cell_size b, the slicing is kept.
-    EllipticalGapModelParameters with_semi_axes(double a, double b) const;
   };
 
   class EllipticalGapModel

@@ -42,24 +42,29 @@ namespace penny
                                                                     const Traction            &t_ref,
                                                                     const CrackExtension<dim> &q) const
   {
-    return signed_stress_intensity_factors(u, t, u_ref, t_ref, {&q}).front();
+    return signed_stress_intensity_factors({{&u, &t}}, u_ref, t_ref, {&q}).front().front();
   }
 
   template <typename Kinematics>
-  std::vector<double> DomainIntegral<Kinematics>::signed_stress_intensity_factors(
-      const DisplacementVector &u, const Traction &t, const DisplacementVector &u_ref, const Traction &t_ref,
+  std::vector<std::vector<double>> DomainIntegral<Kinematics>::signed_stress_intensity_factors(
+      const std::vector<Load> &loads, const DisplacementVector &u_ref, const Traction &t_ref,
       const std::vector<const CrackExtension<dim> *> &qs) const
   {
-    const std::vector<double> reference = bilinear(u_ref, t_ref, u_ref, t_ref, qs);
-    std::vector<double>       mixed     = bilinear(u, t, u_ref, t_ref, qs);
-    for (unsigned int i = 0; i < qs.size(); ++i)
+    std::vector<double> k_ref = bilinear(u_ref, t_ref, u_ref, t_ref, qs);
+    for (double &k : k_ref)
       {
-        const double k_ref = std::sqrt(e_prime * std::max(reference[i], 0.));
-        if (!(k_ref > 0))
+        k = std::sqrt(e_prime * std::max(k, 0.));
+        if (!(k > 0))
           throw std::runtime_error("J-integral: the reference load gives K_I = 0; it cannot sign K_I");
-        mixed[i] = e_prime * mixed[i] / k_ref;
       }
-    return mixed;
+    std::vector<std::vector<double>> K;
+    for (const Load &load : loads)
+      {
+        K.push_back(bilinear(*load.u, *load.t, u_ref, t_ref, qs));
+        for (unsigned int i = 0; i < qs.size(); ++i)
+          K.back()[i] *= e_prime / k_ref[i];
+      }
+    return K;
   }
 
   template <typename Kinematics>

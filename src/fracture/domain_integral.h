@@ -53,9 +53,16 @@ namespace penny
     std::vector<double> bilinear(const DisplacementVector &u, const Traction &t_u,
                                  const DisplacementVector &v, const Traction &t_v,
                                  const std::vector<const CrackExtension<dim> *> &qs) const;
-    std::vector<double>
-    signed_stress_intensity_factors(const DisplacementVector &u, const Traction &t,
-                                    const DisplacementVector &u_ref, const Traction &t_ref,
+    // Signed K_I of several loads (u, t) against one reference, per load and
+    // extension: the reference's integral is evaluated once.
+    struct Load
+    {
+      const DisplacementVector *u;
+      const Traction           *t;
+    };
+    std::vector<std::vector<double>>
+    signed_stress_intensity_factors(const std::vector<Load> &loads, const DisplacementVector &u_ref,
+                                    const Traction                                 &t_ref,
                                     const std::vector<const CrackExtension<dim> *> &qs) const;
 
   private:

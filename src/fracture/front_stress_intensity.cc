@@ -32,22 +32,22 @@ namespace penny
       }
   }
 
-  // All points on all rings in one pass of the domain integral.
-  std::vector<std::vector<double>>
-  FrontStressIntensity::signed_sifs(const DisplacementVector &u, const EllipticalGapModel::Traction &t,
-                                    const DisplacementVector           &u_ref,
+  // All points on all rings in one pass of the domain integral per load.
+  std::vector<std::vector<std::vector<double>>>
+  FrontStressIntensity::signed_sifs(const std::vector<Load> &loads, const DisplacementVector &u_ref,
                                     const EllipticalGapModel::Traction &t_ref) const
   {
     std::vector<const CrackExtension<3> *> all;
     for (const auto &ring : extensions)
       for (const auto &q : ring)
         all.push_back(&q);
-    const std::vector<double> flat = j_integral.signed_stress_intensity_factors(u, t, u_ref, t_ref, all);
-    std::vector<std::vector<double>> K;
-    for (unsigned int r = 0, i = 0; r < extensions.size(); ++r)
+    std::vector<std::vector<std::vector<double>>> K;
+    for (const std::vector<double> &flat :
+         j_integral.signed_stress_intensity_factors(loads, u_ref, t_ref, all))
       {
-        K.emplace_back(flat.begin() + i, flat.begin() + i + extensions[r].size());
-        i += extensions[r].size();
+        K.emplace_back();
+        for (unsigned int r = 0, i = 0; r < extensions.size(); i += extensions[r].size(), ++r)
+          K.back().emplace_back(flat.begin() + i, flat.begin() + i + extensions[r].size());
       }
     return K;
   }

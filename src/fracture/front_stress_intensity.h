@@ -24,13 +24,13 @@ namespace penny
     FrontStressIntensity(const EllipticalGapModel &model, const std::vector<double> &angles,
                          double half_width_cells, const std::vector<double> &ring_radii);
 
-    // Signed K_I (Pa m^1/2) of u under the traction t, per ring and point:
-    // E' B(u, u_ref)/K_ref with u_ref the displacement under the traction
-    // t_ref > 0 (e.g. unit pressure), K_ref = sqrt(E' B(u_ref, u_ref)).
-    std::vector<std::vector<double>> signed_sifs(const DisplacementVector           &u,
-                                                 const EllipticalGapModel::Traction &t,
-                                                 const DisplacementVector           &u_ref,
-                                                 const EllipticalGapModel::Traction &t_ref) const;
+    // Signed K_I (Pa m^1/2) of each load (u under the traction t), per load,
+    // ring and point: E' B(u, u_ref)/K_ref with u_ref the displacement under
+    // the traction t_ref > 0 (e.g. unit pressure), K_ref = sqrt(E' B(u_ref, u_ref)).
+    using Load = DomainIntegral<Solid>::Load;
+    std::vector<std::vector<std::vector<double>>>
+    signed_sifs(const std::vector<Load> &loads, const DisplacementVector &u_ref,
+                const EllipticalGapModel::Traction &t_ref) const;
 
     const std::vector<double> &get_angles() const { return angles; }
     // The extension of point i on ring r.

@@ -88,7 +88,9 @@ namespace penny
           PENNY_SECTION(summit_statistics, "Summit statistics", SummitStatisticsParameters),
           PENNY_SECTION(bem_westergaard, "BEM Westergaard", BemWestergaardParameters),
           PENNY_SECTION(random_contact, "Random contact", RandomContactParameters),
+          PENNY_SECTION(elliptical_model, "Elliptical model", EllipticalModelParameters),
           PENNY_SECTION(elliptical_gap, "Elliptical gap", EllipticalGapParameters),
+          PENNY_SECTION(elliptical_summits, "Elliptical summits", EllipticalSummitsParameters),
           PENNY_SECTION(fields, "Fields", FieldParameters),
           PENNY_SECTION(output, "Output", OutputParameters)};
       return table;

@@ -49,7 +49,9 @@ namespace penny
     summit_statistics,
     bem_westergaard,
     random_contact,
+    elliptical_model,
     elliptical_gap,
+    elliptical_summits,
     fields,
     output
   };
@@ -89,7 +91,9 @@ namespace penny
     std::optional<SummitStatisticsParameters>     summit_statistics;
     std::optional<BemWestergaardParameters>       bem_westergaard;
     std::optional<RandomContactParameters>        random_contact;
+    std::optional<EllipticalModelParameters>      elliptical_model;
     std::optional<EllipticalGapParameters>        elliptical_gap;
+    std::optional<EllipticalSummitsParameters>    elliptical_summits;
     std::optional<FieldParameters>                fields;
     std::optional<OutputParameters>               output;
 

@@ -124,6 +124,15 @@ namespace penny
                      parameters.verification->tolerance);
     }
 
+    // The gaps' shapes, gap-area ratios and psi against Galin's closed form.
+    Verdict elliptical_summits_verdict(const Parameters &parameters, const ResultFolder &results,
+                                       std::ostream &log)
+    {
+      return verdict("largest relative error of b/a, the gap-area ratio and psi",
+                     run_elliptical_summits_scene(parameters, results, log).largest_error,
+                     parameters.verification->tolerance);
+    }
+
     std::vector<std::string> scene_names()
     {
       std::vector<std::string> names;
@@ -228,9 +237,16 @@ namespace penny
       {"elliptical-gap",
        "one 3D FE solve (distributed) of an elliptical gap under uniform pressure: K_I(phi) at the front "
        "points from front-localised J-integrals (signed), beside the Green-Sneddon/Irwin closed form",
-       {S::material, S::elliptical_gap, S::finite_element, S::linear_solver, S::fields, S::verification,
-        S::output},
+       {S::material, S::elliptical_model, S::elliptical_gap, S::finite_element, S::linear_solver, S::fields,
+        S::verification, S::output},
        elliptical_gap_verdict},
+      {"elliptical-summits",
+       "3D FE searches (distributed) for the gaps of summits P (1 - x^2/Ax^2 - y^2/Ay^2): without adhesion "
+       "K_I = 0, with adhesion K_I = K_Ic at the ends of the front at the least P (psi), beside Galin's "
+       "closed form",
+       {S::material, S::elliptical_model, S::elliptical_summits, S::finite_element, S::linear_solver,
+        S::verification, S::output},
+       elliptical_summits_verdict},
       {"zero-load-gap-area",
        "A_nc/A_0 at zero mean pressure against p0/sqrt(V) (paper Fig. 3)",
        {S::material, S::adhesion, S::roughness, S::area_load, S::zero_load_gap_area, S::output},

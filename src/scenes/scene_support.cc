@@ -37,7 +37,7 @@ namespace penny
   {
     const auto times = timer.get_summary_data(dealii::TimerOutput::total_wall_time);
     for (const std::string phase :
-         {"mesh", "setup", "assembly", "solve", "J-integral", "closed form", "output"})
+         {"mesh", "setup", "assembly", "solve", "J-integral", "axisymmetric model", "closed form", "output"})
       if (times.count(phase))
         summary.add_row(
             {"wall time " + phase + " (s)", Table::Cell(times.at(phase), Table::Format{3, false})});

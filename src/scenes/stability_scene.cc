@@ -3,6 +3,7 @@
 #include "output/progress.h"
 #include "scenes/penny_gap_scene.h"
 #include "scenes/scene_support.h"
+#include "statistics/realisations.h"
 
 #include <deal.II/base/timer.h>
 
@@ -25,20 +26,41 @@ namespace penny
       LoadParameters          load;
     };
 
-    struct Case
+    PennySceneResults solve(Setting setting, const std::vector<double> &ring_radii,
+                            const std::function<void(Setting &)> &modify)
     {
-      std::string                    name, setting;
-      std::function<void(Setting &)> modify;
-      // Why the case may miss the target; empty: it must pass.
-      std::string expected_miss = {};
-    };
-
-    PennySceneResults solve(Setting setting, const std::vector<double> &ring_radii, const Case &c)
-    {
-      c.modify(setting);
+      modify(setting);
       TimerOutput timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
       return solve_penny_gap(setting.model, setting.load, ring_radii, timer);
     }
+
+    // What a case's solves give: its error, the largest relative residual,
+    // CG's condition estimate and one more number a case may need for its status.
+    struct Outcome
+    {
+      double error, residual, condition, extra = 0;
+    };
+
+    struct Case
+    {
+      std::string              name, setting, measure;
+      double                   tolerance;
+      std::function<Outcome()> run;
+      // Why the case may miss the tolerance (from its outcome); empty: it must pass.
+      std::function<std::string(const Outcome &)> expected_miss = [](const Outcome &) {
+        return std::string();
+      };
+      // A flag that replaces a pass (from its outcome); empty: none.
+      std::function<std::string(const Outcome &)> pass_flag = [](const Outcome &) { return std::string(); };
+
+      std::string status(const Outcome &outcome) const
+      {
+        const std::string reason = outcome.error <= tolerance ? pass_flag(outcome) : expected_miss(outcome);
+        if (!reason.empty())
+          return "flagged: " + reason;
+        return outcome.error <= tolerance ? "pass" : "FAIL: error above tolerance";
+      }
+    };
 
     // Largest relative deviation of the signed K_I on any ring from `reference`.
     double largest_error(const PennySceneResults &results, const double reference)
@@ -47,13 +69,6 @@ namespace penny
       for (const auto &ring : results.rings)
         worst = std::max(worst, relative_error(ring.signed_stress_intensity_factor, reference));
       return worst;
-    }
-
-    std::string status(const double error, const double tolerance, const std::string &expected_miss)
-    {
-      if (error <= tolerance)
-        return "pass";
-      return expected_miss.empty() ? "FAIL: error above tolerance" : "flagged: " + expected_miss;
     }
 
     std::string setting(const char *format, const double value)
@@ -67,128 +82,155 @@ namespace penny
   std::vector<StabilityRow> run_stability_scene(const Parameters &parameters, const ResultFolder &results,
                                                 std::ostream &log)
   {
-    const double               target = parameters.stability->target_accuracy;
-    const Setting              base{penny_gap_model(parameters), *parameters.load};
+    const double target = parameters.stability->target_accuracy;
+    // Every model on one rank: the cases are spread over the ranks.
+    Setting base{penny_gap_model(parameters), *parameters.load};
+    base.model.communicator          = MPI_COMM_SELF;
     const std::vector<double> &radii = parameters.j_integral->ring_radii;
-    std::vector<StabilityRow>  rows;
-    Progress                   progress(log, "cases");
-    const auto                 add = [&](const Case &c, const PennySceneResults &solved, const double error,
-                         const std::string &measure, const double tolerance, const std::string &miss) {
-      rows.push_back({c.name, c.setting, error, measure, tolerance, solved.relative_residual,
-                      solved.condition_estimate, status(error, tolerance, miss)});
-      progress.step(c.name + ", " + c.setting + ": " + rows.back().status);
+    const auto outcome = [](const PennySceneResults &solved, const double error, const double extra = 0) {
+      return Outcome{error, solved.relative_residual, solved.condition_estimate, extra};
     };
+    std::vector<Case> cases;
     // Relative error of the signed K_I against the closed form.
-    const auto run_relative = [&](const Case &c) {
-      const PennySceneResults solved = solve(base, radii, c);
-      add(c, solved, largest_error(solved, solved.exact_stress_intensity_factor.value), "relative", target,
-          c.expected_miss);
+    const auto relative = [&](const std::string &name, const std::string &setting,
+                              const std::function<void(Setting &)> &modify, const std::string &miss = "") {
+      cases.push_back({name, setting, "relative", target, [&, modify] {
+                         const PennySceneResults solved = solve(base, radii, modify);
+                         return outcome(solved,
+                                        largest_error(solved, solved.exact_stress_intensity_factor.value));
+                       }});
+      cases.back().expected_miss = [miss](const Outcome &) { return miss; };
     };
 
     // 1. Near-incompressibility: degree 1 locks; degree 4 stays accurate.
     for (const double nu : {0.3, 0.45, 0.49, 0.499, 0.4999})
       for (const unsigned int degree : {1u, 4u})
-        run_relative({"incompressibility", setting("degree ", degree) + setting(", nu = ", nu),
-                      [=](Setting &s) {
-                        s.model.material.poissons_ratio = nu;
-                        s.model.degree                  = degree;
-                      },
-                      degree == 1 ? "degree-1 elements lock as nu -> 1/2" : ""});
+        relative(
+            "incompressibility", setting("degree ", degree) + setting(", nu = ", nu),
+            [=](Setting &s) {
+              s.model.material.poissons_ratio = nu;
+              s.model.degree                  = degree;
+            },
+            degree == 1 ? "degree-1 elements lock as nu -> 1/2" : "");
 
     // 2. Extreme scales: the same relative error as the unit case, to 1e-9.
-    const Case              unit_case{"scales", "E = 1 GPa, c = 1 m", [](Setting &) {}};
-    const PennySceneResults unit = solve(base, radii, unit_case);
-    const double            unit_ratio =
-        unit.rings.back().signed_stress_intensity_factor / unit.exact_stress_intensity_factor.value;
+    const auto ratio_to_exact = [](const PennySceneResults &solved) {
+      return solved.rings.back().signed_stress_intensity_factor / solved.exact_stress_intensity_factor.value;
+    };
+    const double unit_ratio = ratio_to_exact(solve(base, radii, [](Setting &) {}));
     for (const double E : {1e-3, 1e12})
       for (const double c : {1e-9, 1e3})
-        {
-          const Case scaled{"scales", setting("E = ", E) + setting(" Pa, c = ", c) + " m", [=](Setting &s) {
-                              s.model                         = s.model.scaled_to(c);
-                              s.model.material.youngs_modulus = E;
-                            }};
-          const PennySceneResults solved = solve(base, radii, scaled);
-          const double            ratio =
-              solved.rings.back().signed_stress_intensity_factor / solved.exact_stress_intensity_factor.value;
-          add(scaled, solved, relative_error(ratio, unit_ratio), "vs unit case", 1e-9, "");
-        }
+        cases.push_back(
+            {"scales", setting("E = ", E) + setting(" Pa, c = ", c) + " m", "vs unit case", 1e-9, [&, E, c] {
+               const PennySceneResults solved = solve(base, radii, [=](Setting &s) {
+                 s.model                         = s.model.scaled_to(c);
+                 s.model.material.youngs_modulus = E;
+               });
+               return outcome(solved, relative_error(ratio_to_exact(solved), unit_ratio));
+             }});
 
     // 3. Geometry: the finite domain, the parabola's width, the root and beyond.
     for (const double c_over_R : {1e-5, 1e-3, 1e-2, 1e-1, 0.5})
-      run_relative({"finite domain", setting("c/R = c/H = ", c_over_R),
-                    [=](Setting &s) {
-                      s.model.geometry.domain_radius = s.model.geometry.gap_radius / c_over_R;
-                      s.model.geometry.domain_height = s.model.geometry.gap_radius / c_over_R;
-                    },
-                    "finite domain: the closed form is for an infinite solid"});
+      relative(
+          "finite domain", setting("c/R = c/H = ", c_over_R),
+          [=](Setting &s) {
+            s.model.geometry.domain_radius = s.model.geometry.gap_radius / c_over_R;
+            s.model.geometry.domain_height = s.model.geometry.gap_radius / c_over_R;
+          },
+          "finite domain: the closed form is for an infinite solid");
     for (const double a_over_c : {0.5, 1., 2., 10., 100.})
       {
-        const Case              parabola{"parabola width", setting("a/c = ", a_over_c), [=](Setting &s) {
-                              s.load.type           = LoadParameters::Type::parabolic;
-                              s.load.tension_radius = a_over_c * s.model.geometry.gap_radius;
-                            }};
-        const PennySceneResults solved   = solve(base, radii, parabola);
-        const double            error    = largest_error(solved, solved.exact_stress_intensity_factor.value);
-        const bool              negative = solved.rings.back().signed_stress_intensity_factor < 0;
-        add(parabola, solved, error, "relative", target, "");
-        if (negative && rows.back().status == "pass")
-          rows.back().status = "flagged: K_I < 0: the faces would interpenetrate";
+        // extra: 1 where K_I < 0.
+        cases.push_back({"parabola width", setting("a/c = ", a_over_c), "relative", target, [&, a_over_c] {
+                           const PennySceneResults solved = solve(base, radii, [=](Setting &s) {
+                             s.load.type           = LoadParameters::Type::parabolic;
+                             s.load.tension_radius = a_over_c * s.model.geometry.gap_radius;
+                           });
+                           return outcome(solved,
+                                          largest_error(solved, solved.exact_stress_intensity_factor.value),
+                                          solved.rings.back().signed_stress_intensity_factor < 0);
+                         }});
+        cases.back().pass_flag = [](const Outcome &o) {
+          return std::string(o.extra ? "K_I < 0: the faces would interpenetrate" : "");
+        };
       }
     // At the root K_I is nearly zero: an absolute error in units of 2 P sqrt(c/pi).
     for (const double offset : {-1e-8, 1e-8})
-      {
-        const Case near_root{
-            "near the root", setting("c/a = sqrt(3/2) (1 + ", offset) + ")", [=](Setting &s) {
-              s.load.type           = LoadParameters::Type::parabolic;
-              s.load.tension_radius = s.model.geometry.gap_radius / (std::sqrt(1.5) * (1 + offset));
-            }};
-        const PennySceneResults solved = solve(base, radii, near_root);
-        const double scale = 2 * base.load.peak_tension * std::sqrt(base.model.geometry.gap_radius / M_PI);
-        double       error = 0;
-        for (const auto &ring : solved.rings)
-          error = std::max(error, std::abs(ring.signed_stress_intensity_factor -
-                                           solved.exact_stress_intensity_factor.value) /
-                                      scale);
-        add(near_root, solved, error, "absolute / (2 P sqrt(c/pi))", target, "");
-      }
+      cases.push_back({"near the root", setting("c/a = sqrt(3/2) (1 + ", offset) + ")",
+                       "absolute / (2 P sqrt(c/pi))", target, [&, offset] {
+                         const PennySceneResults solved = solve(base, radii, [=](Setting &s) {
+                           s.load.type = LoadParameters::Type::parabolic;
+                           s.load.tension_radius =
+                               s.model.geometry.gap_radius / (std::sqrt(1.5) * (1 + offset));
+                         });
+                         const double            scale =
+                             2 * base.load.peak_tension * std::sqrt(base.model.geometry.gap_radius / M_PI);
+                         double error = 0;
+                         for (const auto &ring : solved.rings)
+                           error = std::max(error, std::abs(ring.signed_stress_intensity_factor -
+                                                            solved.exact_stress_intensity_factor.value) /
+                                                       scale);
+                         return outcome(solved, error);
+                       }});
 
     // 4. Mesh extremes.
-    run_relative({"mesh", "40 tip levels (cells 1e-12 c)", [](Setting &s) { s.model.mesh.tip_levels = 40; }});
+    relative("mesh", "40 tip levels (cells 1e-12 c)", [](Setting &s) { s.model.mesh.tip_levels = 40; });
     for (const double ratio : {10., 100.})
       {
-        const Case              stretched{"mesh", setting("cell aspect ratio ", ratio) + " above z = c",
-                             [=](Setting &s) { s.model.mesh.cell_aspect_ratio = ratio; }};
-        const PennySceneResults solved = solve(base, radii, stretched);
-        double                  spread = 0;
-        for (const auto &ring : solved.rings)
-          spread = std::max(spread, relative_error(ring.signed_stress_intensity_factor,
-                                                   solved.rings.front().signed_stress_intensity_factor));
-        add(stretched, solved, largest_error(solved, solved.exact_stress_intensity_factor.value), "relative",
-            target, setting("stretched far cells under-resolve the far field; the rings agree to ", spread));
+        // extra: the largest difference between the rings.
+        cases.push_back(
+            {"mesh", setting("cell aspect ratio ", ratio) + " above z = c", "relative", target, [&, ratio] {
+               const PennySceneResults solved =
+                   solve(base, radii, [=](Setting &s) { s.model.mesh.cell_aspect_ratio = ratio; });
+               double spread = 0;
+               for (const auto &ring : solved.rings)
+                 spread =
+                     std::max(spread, relative_error(ring.signed_stress_intensity_factor,
+                                                     solved.rings.front().signed_stress_intensity_factor));
+               return outcome(solved, largest_error(solved, solved.exact_stress_intensity_factor.value),
+                              spread);
+             }});
+        cases.back().expected_miss = [](const Outcome &o) {
+          return setting("stretched far cells under-resolve the far field; the rings agree to ", o.extra);
+        };
       }
 
     // 5. Solvers: CG with AMG against the direct solver on the same system.
     for (const unsigned int levels : {20u, 30u})
+      cases.push_back({"solvers", setting("CG + AMG vs UMFPACK, tip levels ", levels),
+                       "vs direct, ring by ring", 1e-8, [&, levels] {
+                         const auto on_same_system = [=](Setting &s) {
+                           s.model.degree          = 2;
+                           s.model.mesh.tip_levels = levels;
+                         };
+                         const PennySceneResults reference  = solve(base, radii, on_same_system);
+                         const PennySceneResults solved     = solve(base, radii, [=](Setting &s) {
+                           on_same_system(s);
+                           s.model.linear_solver.type           = LinearSolverParameters::Type::cg_amg;
+                           s.model.linear_solver.tolerance      = 1e-12;
+                           s.model.linear_solver.max_iterations = 20000;
+                         });
+                         double                  difference = 0;
+                         for (unsigned int i = 0; i < solved.rings.size(); ++i)
+                           difference = std::max(
+                               difference, relative_error(solved.rings[i].signed_stress_intensity_factor,
+                                                          reference.rings[i].signed_stress_intensity_factor));
+                         return outcome(solved, difference);
+                       }});
+
+    // Each case on one rank, the outcomes gathered in case order on every rank.
+    Progress   progress(log, "cases on rank 0");
+    const auto outcomes = spread_over_ranks(MPI_COMM_WORLD, cases.size(), [&](const unsigned int i) {
+      const Outcome o = cases[i].run();
+      progress.step(cases[i].name + ", " + cases[i].setting + ": " + cases[i].status(o));
+      return std::vector<double>{o.error, o.residual, o.condition, o.extra};
+    });
+    std::vector<StabilityRow> rows;
+    for (unsigned int i = 0; i < cases.size(); ++i)
       {
-        const auto on_same_system = [=](Setting &s) {
-          s.model.degree          = 2;
-          s.model.mesh.tip_levels = levels;
-        };
-        const Case direct{"solvers", "UMFPACK", on_same_system};
-        const Case iterative{"solvers", setting("CG + AMG vs UMFPACK, tip levels ", levels), [=](Setting &s) {
-                               on_same_system(s);
-                               s.model.linear_solver.type           = LinearSolverParameters::Type::cg_amg;
-                               s.model.linear_solver.tolerance      = 1e-12;
-                               s.model.linear_solver.max_iterations = 20000;
-                             }};
-        const PennySceneResults reference  = solve(base, radii, direct);
-        const PennySceneResults solved     = solve(base, radii, iterative);
-        double                  difference = 0;
-        for (unsigned int i = 0; i < solved.rings.size(); ++i)
-          difference =
-              std::max(difference, relative_error(solved.rings[i].signed_stress_intensity_factor,
-                                                  reference.rings[i].signed_stress_intensity_factor));
-        add(iterative, solved, difference, "vs direct, ring by ring", 1e-8, "");
+        const Outcome o{outcomes[i][0], outcomes[i][1], outcomes[i][2], outcomes[i][3]};
+        rows.push_back({cases[i].name, cases[i].setting, o.error, cases[i].measure, cases[i].tolerance,
+                        o.residual, o.condition, cases[i].status(o)});
       }
 
     const Table::Format digits{3, true};
