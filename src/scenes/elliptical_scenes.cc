@@ -357,6 +357,12 @@ namespace penny
     solved.tension_aspect_ratios = summits.tension_aspect_ratios;
     solved.angles                = front_point_angles(summits.front_points);
     solved.fe_models             = 0;
+    {
+      // First, as it takes milliseconds: a summit the closed form cannot answer stops the scene here.
+      TimerOutput::Scope scope(timer, "closed form");
+      for (const double ratio : solved.tension_aspect_ratios)
+        solved.exact.push_back(summit_gaps(galin_unit_load_sifs, ratio, solved.angles));
+    }
     Progress progress(log, "3D models");
     for (const auto &[discretisation, name, gaps] :
          {std::tuple{&fine, "FE", &solved.fe}, std::tuple{&coarse, "coarse FE", &solved.coarse_fe}})
@@ -378,12 +384,6 @@ namespace penny
           }
         solved.fe_models += family.n_models();
       }
-    {
-      TimerOutput::Scope scope(timer, "closed form");
-      for (const double ratio : solved.tension_aspect_ratios)
-        solved.exact.push_back(summit_gaps(galin_unit_load_sifs, ratio, solved.angles));
-    }
-    solved.wall_time = total_wall_time(timer);
 
     const auto adhesionless = [](const auto member) {
       return [member](const SummitGaps &g) { return g.adhesionless.*member; };

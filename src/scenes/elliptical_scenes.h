@@ -58,7 +58,6 @@ namespace penny
     std::vector<SummitGaps> fe, coarse_fe, exact;  // per Ay/Ax; coarse_fe: cells and sectors halved
     double                  largest_error;         // of b/a, the area ratio and psi, FE against exact
     unsigned int            fe_models;
-    double                  wall_time; // s
   };
 
   // For each Ay/Ax of 'Elliptical summits': the adhesionless gap (K_I = 0 at
