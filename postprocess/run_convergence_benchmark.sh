@@ -13,7 +13,7 @@ done
   output/convergence/uniform-h output/convergence/tip-grading output/convergence/degree output/convergence/adaptive \
   output/convergence/uniform-h-cg-amg output/convergence/degree-cg-amg
 
-# The largest meshes on 2 ranks: MUMPS takes UMFPACK's place, CG + AMG stays.
+# The largest meshes on 2 ranks: MUMPS takes CHOLMOD's place, CG + AMG stays.
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 for sequence in uniform-h uniform-h-cg-amg degree; do
   echo "== $sequence on 2 MPI ranks"

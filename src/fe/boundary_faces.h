@@ -5,22 +5,23 @@
 
 #include <deal.II/dofs/dof_handler.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/hp/fe_values.h>
 
 namespace penny
 {
-  // Calls f(cell, fe_face) with `fe_face` reinitialised on every locally
-  // owned face on boundary `id`.
+  // Calls f(cell, fe_face) with the values of `hp_face` reinitialised on
+  // every locally owned face on boundary `id`, with the cell's element.
   template <int dim, typename F>
   void for_each_boundary_face(const dealii::DoFHandler<dim> &dof_handler, const dealii::types::boundary_id id,
-                              dealii::FEFaceValues<dim> &fe_face, F &&f)
+                              dealii::hp::FEFaceValues<dim> &hp_face, F &&f)
   {
     for (const auto &cell : dof_handler.active_cell_iterators())
       if (cell->is_locally_owned())
         for (const auto &face : cell->face_iterators())
           if (face->at_boundary() && face->boundary_id() == id)
             {
-              fe_face.reinit(cell, face);
-              f(cell, fe_face);
+              hp_face.reinit(cell, face);
+              f(cell, hp_face.get_present_fe_values());
             }
   }
 } // namespace penny

@@ -10,12 +10,15 @@
 //   Solid (x, y, z):      the gradient itself; dV.
 //
 // The last coordinate is always the one normal to the crack plane z = 0.
+// `strain_entries` lists the entries of the 3x3 strain a setting can make
+// nonzero, as raw indices of Strain (0, 1, 2: 00, 11, 22; 3, 4, 5: 01, 02, 12).
 #pragma once
 
 #include <deal.II/base/point.h>
 #include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
+#include <array>
 #include <cmath>
 
 namespace penny
@@ -26,7 +29,8 @@ namespace penny
 
   struct Axisymmetric
   {
-    static constexpr int dim = 2;
+    static constexpr int                         dim = 2;
+    static constexpr std::array<unsigned int, 4> strain_entries{{0, 1, 2, 3}}; // rr, zz, theta theta, rz
 
     static Tensor3 gradient(const dealii::Tensor<2, 2> &grad_v, const dealii::Tensor<1, 2> &v,
                             const Point<2> &x)
@@ -45,7 +49,8 @@ namespace penny
 
   struct PlaneStrain
   {
-    static constexpr int dim = 2;
+    static constexpr int                         dim = 2;
+    static constexpr std::array<unsigned int, 3> strain_entries{{0, 1, 3}}; // xx, zz, xz
 
     static Tensor3 gradient(const dealii::Tensor<2, 2> &grad_v, const dealii::Tensor<1, 2> &,
                             const Point<2> &)
@@ -62,7 +67,8 @@ namespace penny
 
   struct Solid
   {
-    static constexpr int dim = 3;
+    static constexpr int                         dim = 3;
+    static constexpr std::array<unsigned int, 6> strain_entries{{0, 1, 2, 3, 4, 5}};
 
     static Tensor3 gradient(const dealii::Tensor<2, 3> &grad_v, const dealii::Tensor<1, 3> &,
                             const Point<3> &)

@@ -61,14 +61,14 @@ namespace penny
 
   double EllipticalGapModel::gap_volume(const DisplacementVector &u) const
   {
-    const QGauss<2>                  face_quadrature(parameters.degree + 2);
-    FEFaceValues<3>                  fe_face(system.get_mapping(), system.get_fe(), face_quadrature,
+    hp::FEFaceValues<3>              fe_face(system.get_mapping(), system.get_fe(), system.face_gauss(2),
                                              update_values | update_JxW_values);
-    std::vector<Tensor<1, 3>>        values(face_quadrature.size());
+    std::vector<Tensor<1, 3>>        values;
     const FEValuesExtractors::Vector displacement(0);
     double                           volume = 0;
     for_each_boundary_face(system.get_dof_handler(), boundary_id::gap_face, fe_face,
                            [&](const auto &, const FEFaceValues<3> &face) {
+                             values.resize(face.n_quadrature_points);
                              face[displacement].get_function_values(u, values);
                              for (const unsigned int q : face.quadrature_point_indices())
                                volume += 8 * values[q][2] * face.JxW(q);

@@ -7,7 +7,11 @@
 // step-40 pattern); one rank is the serial case. Cells are mapped with
 // polynomials of a chosen degree: 1 for straight-sided meshes, the element's
 // degree where cells follow a curved crack front (MappingQ takes the curved
-// positions from the triangulation's manifolds).
+// positions from the triangulation's manifolds). The degree may differ from
+// cell to cell (hp): a model may grade it down towards a crack tip, where
+// the cells are small; the elements of the degrees 1 ... the model's degree
+// then form an hp::FECollection, and hanging-node constraints join cells of
+// different degrees.
 #pragma once
 
 #include "fe/elasticity.h"
@@ -19,10 +23,10 @@
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/grid/tria.h>
+#include <deal.II/hp/fe_collection.h>
+#include <deal.II/hp/mapping_collection.h>
+#include <deal.II/hp/q_collection.h>
 #include <deal.II/lac/affine_constraints.h>
-#include <deal.II/lac/sparse_direct.h>
-#include <deal.II/lac/sparse_matrix.h>
-#include <deal.II/lac/sparsity_pattern.h>
 #include <deal.II/lac/trilinos_precondition.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
@@ -52,6 +56,9 @@ namespace penny
     dealii::ComponentMask      components;
   };
 
+  // The sparse Cholesky factors of the stiffness matrix on one rank (CHOLMOD).
+  struct SerialCholesky;
+
   template <typename Kinematics> class LinearElasticSystem
   {
   public:
@@ -61,10 +68,17 @@ namespace penny
     // model and opens the gap (Pa).
     using Traction = std::function<double(const dealii::Point<dim> &)>;
 
+    // The degree of a cell's element, from 1 to the model's degree.
+    using CellDegree =
+        std::function<unsigned int(const typename dealii::Triangulation<dim>::active_cell_iterator &)>;
+
+    // `degree` on every cell, or `cell_degree` of each cell if given.
     LinearElasticSystem(const dealii::Triangulation<dim> &triangulation, unsigned int degree,
                         unsigned int mapping_degree, const MaterialParameters &material,
                         const LinearSolverParameters &linear_solver,
-                        std::vector<ZeroDisplacement> zero_displacements, dealii::TimerOutput &timer);
+                        std::vector<ZeroDisplacement> zero_displacements, dealii::TimerOutput &timer,
+                        CellDegree cell_degree = {});
+    ~LinearElasticSystem();
 
     // Distributes the degrees of freedom, assembles and factorises; again
     // after the triangulation was refined.
@@ -80,10 +94,17 @@ namespace penny
     // Both together: the displacement under the traction t on `face`.
     DisplacementVector solve(dealii::types::boundary_id face, const Traction &traction);
 
-    const SolveReport                &last_solve() const { return report; }
-    const dealii::DoFHandler<dim>    &get_dof_handler() const { return dof_handler; }
-    const dealii::FESystem<dim>      &get_fe() const { return fe; }
-    const dealii::Mapping<dim>       &get_mapping() const { return mapping; }
+    const SolveReport             &last_solve() const { return report; }
+    const dealii::DoFHandler<dim> &get_dof_handler() const { return dof_handler; }
+    // The elements, indexed by the cells' active FE index.
+    const dealii::hp::FECollection<dim>      &get_fe() const { return fe; }
+    const dealii::hp::MappingCollection<dim> &get_mapping() const { return mapping; }
+    // The highest degree.
+    unsigned int degree() const { return fe.max_degree(); }
+    // Gauss quadratures on cells and faces, degree + extra points per
+    // direction for each element of the collection.
+    dealii::hp::QCollection<dim>      gauss(unsigned int extra) const;
+    dealii::hp::QCollection<dim - 1>  face_gauss(unsigned int extra) const;
     const IsotropicElasticity        &get_elasticity() const { return elasticity; }
     const dealii::Triangulation<dim> &get_triangulation() const { return dof_handler.get_triangulation(); }
     MPI_Comm get_communicator() const { return get_triangulation().get_communicator(); }
@@ -91,7 +112,7 @@ namespace penny
     // Entries of the stiffness matrix, all ranks together.
     std::size_t n_matrix_entries() const { return stiffness.n_nonzero_elements(); }
 
-    // "UMFPACK" (one MPI rank), "MUMPS" (several) or "CG + AMG".
+    // "CHOLMOD" (one MPI rank), "MUMPS" (several) or "CG + AMG".
     std::string solver_name() const;
 
     // The last component of u (u_z) at the origin, which must be a vertex:
@@ -107,22 +128,21 @@ namespace penny
     void apply_inverse(dealii::TrilinosWrappers::MPI::Vector       &x,
                        const dealii::TrilinosWrappers::MPI::Vector &b);
 
-    const dealii::FESystem<dim>         fe;
-    const dealii::MappingQ<dim>         mapping;
-    const IsotropicElasticity           elasticity;
-    const LinearSolverParameters        linear_solver;
-    const std::vector<ZeroDisplacement> zero_displacements;
-    dealii::TimerOutput                &timer;
+    const CellDegree                         cell_degree;
+    const dealii::hp::FECollection<dim>      fe;
+    const dealii::hp::MappingCollection<dim> mapping;
+    const IsotropicElasticity                elasticity;
+    const LinearSolverParameters             linear_solver;
+    const std::vector<ZeroDisplacement>      zero_displacements;
+    dealii::TimerOutput                     &timer;
 
     dealii::DoFHandler<dim>                dof_handler;
     dealii::IndexSet                       owned, relevant;
     dealii::AffineConstraints<double>      constraints;
     dealii::TrilinosWrappers::SparseMatrix stiffness;
 
-    // Direct solvers: UMFPACK on one rank (on a copy of the matrix), MUMPS on several.
-    dealii::SparsityPattern                                 serial_sparsity;
-    dealii::SparseMatrix<double>                            serial_stiffness;
-    dealii::SparseDirectUMFPACK                             umfpack;
+    // Direct solvers: CHOLMOD on one rank (on a copy of the matrix), MUMPS on several.
+    std::unique_ptr<SerialCholesky>                         cholesky;
     dealii::SolverControl                                   mumps_control;
     std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> mumps;
     dealii::TrilinosWrappers::PreconditionAMG               amg;

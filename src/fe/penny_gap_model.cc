@@ -11,6 +11,8 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/error_estimator.h>
 
+#include <algorithm>
+#include <cmath>
 #include <sstream>
 
 namespace penny
@@ -53,6 +55,19 @@ namespace penny
                          entries.str(), model.communicator);
     }
 
+    // Finite element/Degree grading: a cell c/2^k wide (k > 0) gets the degree
+    // lowered by one every `levels_per_degree` levels, down to 1.
+    LinearElasticSystem<Axisymmetric>::CellDegree graded_degree(const PennyGapModelParameters &model)
+    {
+      if (model.levels_per_degree == 0)
+        return {};
+      return [c = model.geometry.gap_radius, degree = static_cast<int>(model.degree),
+              step = static_cast<int>(model.levels_per_degree)](const auto &cell) {
+        const int k = static_cast<int>(std::round(std::log2(c / cell->extent_in_direction(0))));
+        return static_cast<unsigned int>(std::max(1, degree - std::max(k, 0) / step));
+      };
+    }
+
     // Meshed before the system that distributes its degrees of freedom on it.
     const Triangulation<2> &meshed(Triangulation<2> &triangulation, const PennyGapModelParameters &model,
                                    TimerOutput &timer)
@@ -78,7 +93,8 @@ namespace penny
       : parameters(parameters), timer(timer),
         triangulation(parameters.communicator, Triangulation<2>::limit_level_difference_at_vertices),
         system(meshed(triangulation, parameters, timer), parameters.degree, 1, parameters.material,
-               parameters.linear_solver, zero_displacements(parameters.geometry), timer)
+               parameters.linear_solver, zero_displacements(parameters.geometry), timer,
+               graded_degree(parameters))
   {
   }
 
@@ -93,8 +109,8 @@ namespace penny
       TimerOutput::Scope scope(timer, "mesh");
       // Each rank estimates its own cells; the sum gives every rank all of them.
       Vector<float> indicators(triangulation.n_active_cells());
-      KellyErrorEstimator<2>::estimate(system.get_dof_handler(), QGauss<1>(parameters.degree + 1), {}, u,
-                                       indicators, ComponentMask(), nullptr, numbers::invalid_unsigned_int,
+      KellyErrorEstimator<2>::estimate(system.get_dof_handler(), system.face_gauss(1), {}, u, indicators,
+                                       ComponentMask(), nullptr, numbers::invalid_unsigned_int,
                                        triangulation.locally_owned_subdomain());
       Utilities::MPI::sum(indicators, triangulation.get_communicator(), indicators);
       // Each refined cell becomes four, and balancing the levels refines about as many again.
@@ -114,14 +130,14 @@ namespace penny
 
   double PennyGapModel::gap_volume(const DisplacementVector &u) const
   {
-    const QGauss<1>                  face_quadrature(parameters.degree + 2);
-    FEFaceValues<2>                  fe_face(system.get_fe(), face_quadrature,
+    hp::FEFaceValues<2>              fe_face(system.get_mapping(), system.get_fe(), system.face_gauss(2),
                                              update_values | update_quadrature_points | update_JxW_values);
-    std::vector<Tensor<1, 2>>        values(face_quadrature.size());
+    std::vector<Tensor<1, 2>>        values;
     const FEValuesExtractors::Vector displacement(0);
     double                           volume = 0;
     for_each_boundary_face(system.get_dof_handler(), boundary_id::gap_face, fe_face,
                            [&](const auto &, const FEFaceValues<2> &face) {
+                             values.resize(face.n_quadrature_points);
                              face[displacement].get_function_values(u, values);
                              for (const unsigned int q : face.quadrature_point_indices())
                                volume += 2 * 2 * numbers::PI * face.quadrature_point(q)[0] * values[q][1] *

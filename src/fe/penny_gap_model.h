@@ -28,6 +28,8 @@ namespace penny
     // The ranks that share the model: all of them, or one alone when a sweep
     // gives each rank its own solves.
     MPI_Comm communicator = MPI_COMM_WORLD;
+    // Finite element/Degree grading: 0 for the degree on every cell.
+    unsigned int levels_per_degree = 0;
 
     // The same model for a gap of radius c: R/c and H/c kept, so the meshes
     // of a search over c are exactly similar.

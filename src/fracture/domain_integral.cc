@@ -7,6 +7,7 @@
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
+#include <deal.II/hp/fe_values.h>
 
 #include <cmath>
 
@@ -22,57 +23,40 @@ namespace penny
   }
 
   template <typename Kinematics>
-  double DomainIntegral<Kinematics>::energy_release_rate(const DisplacementVector &u, const Traction &t,
-                                                         const CrackExtension<dim> &q) const
+  typename DomainIntegral<Kinematics>::StressIntensities
+  DomainIntegral<Kinematics>::stress_intensities(const std::vector<Load> &loads, const Load &reference,
+                                                 const std::vector<const CrackExtension<dim> *> &qs,
+                                                 const bool with_energy_release_rates) const
   {
-    return bilinear(u, t, u, t, q);
-  }
+    // The fields are the loads, then the reference; the pairs (ref, ref),
+    // then (load, ref) and, if asked for, (load, load) for each load.
+    std::vector<Load> fields = loads;
+    fields.push_back(reference);
+    const unsigned int                                 r     = loads.size();
+    std::vector<std::pair<unsigned int, unsigned int>> pairs = {{r, r}};
+    for (unsigned int l = 0; l < r; ++l)
+      pairs.push_back({l, r});
+    if (with_energy_release_rates)
+      for (unsigned int l = 0; l < r; ++l)
+        pairs.push_back({l, l});
+    const std::vector<std::vector<double>> B = bilinear(fields, pairs, qs);
 
-  template <typename Kinematics>
-  double DomainIntegral<Kinematics>::stress_intensity_factor(const DisplacementVector &u, const Traction &t,
-                                                             const CrackExtension<dim> &q) const
-  {
-    return std::sqrt(e_prime * std::max(energy_release_rate(u, t, q), 0.));
-  }
-
-  template <typename Kinematics>
-  double DomainIntegral<Kinematics>::signed_stress_intensity_factor(const DisplacementVector  &u,
-                                                                    const Traction            &t,
-                                                                    const DisplacementVector  &u_ref,
-                                                                    const Traction            &t_ref,
-                                                                    const CrackExtension<dim> &q) const
-  {
-    return signed_stress_intensity_factors({{&u, &t}}, u_ref, t_ref, {&q}).front().front();
-  }
-
-  template <typename Kinematics>
-  std::vector<std::vector<double>> DomainIntegral<Kinematics>::signed_stress_intensity_factors(
-      const std::vector<Load> &loads, const DisplacementVector &u_ref, const Traction &t_ref,
-      const std::vector<const CrackExtension<dim> *> &qs) const
-  {
-    std::vector<double> k_ref = bilinear(u_ref, t_ref, u_ref, t_ref, qs);
-    for (double &k : k_ref)
+    StressIntensities result;
+    for (const double b : B[0])
       {
-        k = std::sqrt(e_prime * std::max(k, 0.));
-        if (!(k > 0))
+        result.reference.push_back(stress_intensity_factor(b));
+        if (!(result.reference.back() > 0))
           throw std::runtime_error("J-integral: the reference load gives K_I = 0; it cannot sign K_I");
       }
-    std::vector<std::vector<double>> K;
-    for (const Load &load : loads)
+    for (unsigned int l = 0; l < r; ++l)
       {
-        K.push_back(bilinear(*load.u, *load.t, u_ref, t_ref, qs));
+        result.signed_sifs.emplace_back();
         for (unsigned int i = 0; i < qs.size(); ++i)
-          K.back()[i] *= e_prime / k_ref[i];
+          result.signed_sifs.back().push_back(e_prime * B[1 + l][i] / result.reference[i]);
+        if (with_energy_release_rates)
+          result.energy_release_rates.push_back(B[1 + r + l]);
       }
-    return K;
-  }
-
-  template <typename Kinematics>
-  double DomainIntegral<Kinematics>::bilinear(const DisplacementVector &u, const Traction &t_u,
-                                              const DisplacementVector &v, const Traction &t_v,
-                                              const CrackExtension<dim> &q) const
-  {
-    return bilinear(u, t_u, v, t_v, {&q}).front();
+    return result;
   }
 
   // Polarised integrands: sigma(u)_ij v_i,k q_k,j is replaced by the mean of
@@ -80,10 +64,10 @@ namespace penny
   // evaluated once, on the finer quadrature if the edge of any of the
   // extensions touching it crosses it.
   template <typename Kinematics>
-  std::vector<double>
-  DomainIntegral<Kinematics>::bilinear(const DisplacementVector &u, const Traction &t_u,
-                                       const DisplacementVector &v, const Traction &t_v,
-                                       const std::vector<const CrackExtension<dim> *> &qs) const
+  std::vector<std::vector<double>>
+  DomainIntegral<Kinematics>::bilinear(const std::vector<Load>                                  &loads,
+                                       const std::vector<std::pair<unsigned int, unsigned int>> &pairs,
+                                       const std::vector<const CrackExtension<dim> *>           &qs) const
   {
     const auto &fe         = system.get_fe();
     const auto &elasticity = system.get_elasticity();
@@ -91,22 +75,35 @@ namespace penny
     // points, and cells and faces that the edge crosses split into 4 x 4 (4)
     // in 2D, 2 x 2 x 2 (2 x 2) in 3D, where 64 sub-cells per crossed cell
     // would cost minutes per front point.
-    const unsigned int       n_points = fe.degree + 4, subdivisions = dim == 3 ? 2 : 4;
-    const QGauss<dim>        quadrature(n_points);
-    const QIterated<dim>     edge_quadrature(QGauss<1>(n_points), subdivisions);
-    const QGauss<dim - 1>    face_quadrature(n_points);
-    const QIterated<dim - 1> edge_face_quadrature(QGauss<1>(n_points), subdivisions);
+    // Per element of the collection: degree + 4 points per direction.
+    const unsigned int       subdivisions = dim == 3 ? 2 : 4;
+    hp::QCollection<dim>     quadrature, edge_quadrature;
+    hp::QCollection<dim - 1> face_quadrature, edge_face_quadrature;
+    for (unsigned int i = 0; i < fe.size(); ++i)
+      {
+        const QGauss<1> points(fe[i].degree + 4);
+        quadrature.push_back(QGauss<dim>(points.size()));
+        edge_quadrature.push_back(QIterated<dim>(points, subdivisions));
+        face_quadrature.push_back(QGauss<dim - 1>(points.size()));
+        edge_face_quadrature.push_back(QIterated<dim - 1>(points, subdivisions));
+      }
     const UpdateFlags flags = update_values | update_gradients | update_quadrature_points | update_JxW_values;
-    const Mapping<dim> &mapping = system.get_mapping();
-    FEValues<dim>       fe_values(mapping, fe, quadrature, flags),
+    const auto       &mapping = system.get_mapping();
+    hp::FEValues<dim> fe_values(mapping, fe, quadrature, flags),
         fe_edge_values(mapping, fe, edge_quadrature, flags);
-    const UpdateFlags face_flags = update_gradients | update_quadrature_points | update_JxW_values;
-    FEFaceValues<dim> fe_face(mapping, fe, face_quadrature, face_flags),
+    const UpdateFlags     face_flags = update_gradients | update_quadrature_points | update_JxW_values;
+    hp::FEFaceValues<dim> fe_face(mapping, fe, face_quadrature, face_flags),
         fe_edge_face(mapping, fe, edge_face_quadrature, face_flags);
     const FEValuesExtractors::Vector displacement(0);
-    std::vector<Tensor<2, dim>>      grad_u, grad_v, face_grad_u, face_grad_v;
-    std::vector<Tensor<1, dim>>      value_u, value_v;
-    std::vector<unsigned int>        touching;
+    const unsigned int               n_fields = loads.size();
+    // Per field: gradients and values at the quadrature points, then the
+    // 3x3 gradient and the stress at the current point.
+    std::vector<std::vector<Tensor<2, dim>>> grads(n_fields);
+    std::vector<std::vector<Tensor<1, dim>>> values_at(n_fields);
+    std::vector<Tensor3>                     d(n_fields);
+    std::vector<Strain>                      sigma(n_fields);
+    std::vector<double>                      t(n_fields);
+    std::vector<unsigned int>                touching;
 
     // The extensions that may touch `cell`, and whether the edge of one crosses `box`.
     const auto touch = [&](const auto &cell, const BoundingBox<dim> &box) {
@@ -121,7 +118,9 @@ namespace penny
       return crossing;
     };
 
-    std::vector<double> area_term(qs.size(), 0.), face_term(qs.size(), 0.);
+    // [pair][extension]
+    std::vector<std::vector<double>> area_term(pairs.size(), std::vector<double>(qs.size(), 0.)),
+        face_term = area_term;
     for (const auto &cell : system.get_dof_handler().active_cell_iterators())
       {
         if (!cell->is_locally_owned())
@@ -129,33 +128,38 @@ namespace penny
         const bool crossing = touch(cell, cell->bounding_box());
         if (touching.empty())
           continue;
-        FEValues<dim> &values = crossing ? fe_edge_values : fe_values;
-        values.reinit(cell);
-        for (auto *vector : {&grad_u, &grad_v})
-          vector->resize(values.n_quadrature_points);
-        for (auto *vector : {&value_u, &value_v})
-          vector->resize(values.n_quadrature_points);
-        values[displacement].get_function_gradients(u, grad_u);
-        values[displacement].get_function_gradients(v, grad_v);
-        values[displacement].get_function_values(u, value_u);
-        values[displacement].get_function_values(v, value_v);
+        hp::FEValues<dim> &hp_values = crossing ? fe_edge_values : fe_values;
+        hp_values.reinit(cell);
+        const FEValues<dim> &values = hp_values.get_present_fe_values();
+        for (unsigned int f = 0; f < n_fields; ++f)
+          {
+            grads[f].resize(values.n_quadrature_points);
+            values_at[f].resize(values.n_quadrature_points);
+            values[displacement].get_function_gradients(*loads[f].u, grads[f]);
+            values[displacement].get_function_values(*loads[f].u, values_at[f]);
+          }
         for (const unsigned int k : values.quadrature_point_indices())
           {
-            const Point<dim> &x   = values.quadrature_point(k);
-            const Tensor3     du  = Kinematics::gradient(grad_u[k], value_u[k], x);
-            const Tensor3     dv  = Kinematics::gradient(grad_v[k], value_v[k], x);
-            const Strain      s_u = elasticity.stress(strain(du));
-            const Strain      s_v = elasticity.stress(strain(dv));
-            const double      W   = 0.5 * (s_u * strain(dv));
-            const double      dmu = Kinematics::measure(x) * values.JxW(k);
+            const Point<dim> &x = values.quadrature_point(k);
+            for (unsigned int f = 0; f < n_fields; ++f)
+              {
+                d[f]     = Kinematics::gradient(grads[f][k], values_at[f][k], x);
+                sigma[f] = elasticity.stress(strain(d[f]));
+              }
+            const double dmu = Kinematics::measure(x) * values.JxW(k);
             for (const unsigned int i : touching)
               {
                 const Tensor3 grad_q = Kinematics::gradient(qs[i]->gradient(x), qs[i]->value(x), x);
                 if (grad_q.norm_square() == 0)
                   continue;
-                const double flux = 0.5 * (scalar_product(Tensor3(s_u), dv * grad_q) +
-                                           scalar_product(Tensor3(s_v), du * grad_q));
-                area_term[i] += (flux - W * trace(grad_q)) * dmu;
+                for (unsigned int p = 0; p < pairs.size(); ++p)
+                  {
+                    const auto [a, b] = pairs[p];
+                    const double W    = 0.5 * (sigma[a] * strain(d[b]));
+                    const double flux = 0.5 * (scalar_product(Tensor3(sigma[a]), d[b] * grad_q) +
+                                               scalar_product(Tensor3(sigma[b]), d[a] * grad_q));
+                    area_term[p][i] += (flux - W * trace(grad_q)) * dmu;
+                  }
               }
           }
       }
@@ -169,36 +173,44 @@ namespace penny
             if (touch(cell, cell->face(face.get_face_number())->bounding_box()) != crossed ||
                 touching.empty())
               return;
-            face_grad_u.resize(face.n_quadrature_points);
-            face_grad_v.resize(face.n_quadrature_points);
-            face[displacement].get_function_gradients(u, face_grad_u);
-            face[displacement].get_function_gradients(v, face_grad_v);
+            for (unsigned int f = 0; f < n_fields; ++f)
+              {
+                grads[f].resize(face.n_quadrature_points);
+                face[displacement].get_function_gradients(*loads[f].u, grads[f]);
+              }
             for (const unsigned int k : face.quadrature_point_indices())
               {
-                const Point<dim> &x  = face.quadrature_point(k);
-                const double      tu = t_u(x), tv = t_v(x);
-                const double      dmu = Kinematics::measure(x) * face.JxW(k);
+                const Point<dim> &x = face.quadrature_point(k);
+                for (unsigned int f = 0; f < n_fields; ++f)
+                  t[f] = (*loads[f].t)(x);
+                const double dmu = Kinematics::measure(x) * face.JxW(k);
                 for (const unsigned int i : touching)
                   {
                     const Tensor<1, dim> qx = qs[i]->value(x);
-                    face_term[i] +=
-                        0.5 * (tu * (face_grad_v[k][dim - 1] * qx) + tv * (face_grad_u[k][dim - 1] * qx)) *
-                        dmu;
+                    for (unsigned int p = 0; p < pairs.size(); ++p)
+                      {
+                        const auto [a, b] = pairs[p];
+                        face_term[p][i] +=
+                            0.5 * (t[a] * (grads[b][k][dim - 1] * qx) + t[b] * (grads[a][k][dim - 1] * qx)) *
+                            dmu;
+                      }
                   }
               }
           });
 
-    std::vector<double> result(qs.size());
-    for (unsigned int i = 0; i < qs.size(); ++i)
-      area_term[i] -= face_term[i];
-    Utilities::MPI::sum(area_term, system.get_communicator(), area_term);
-    for (unsigned int i = 0; i < qs.size(); ++i)
+    for (unsigned int p = 0; p < pairs.size(); ++p)
       {
-        result[i] = 2 / qs[i]->front_measure() * area_term[i];
-        if (!std::isfinite(result[i]))
-          throw std::runtime_error("J-integral: the domain integral gives NaN or Inf");
+        for (unsigned int i = 0; i < qs.size(); ++i)
+          area_term[p][i] -= face_term[p][i];
+        Utilities::MPI::sum(area_term[p], system.get_communicator(), area_term[p]);
+        for (unsigned int i = 0; i < qs.size(); ++i)
+          {
+            area_term[p][i] *= 2 / qs[i]->front_measure();
+            if (!std::isfinite(area_term[p][i]))
+              throw std::runtime_error("J-integral: the domain integral gives NaN or Inf");
+          }
       }
-    return result;
+    return area_term;
   }
 
   template class DomainIntegral<Axisymmetric>;

@@ -9,12 +9,16 @@
 // the axisymmetric model their hoop entries give the hoop term, in plane
 // strain and 3D there is none. The factor 2 counts the lower half. G is
 // evaluated as B(u, u) of the symmetric bilinear form B obtained by
-// polarisation, so that B(u, u_ref) also gives a signed K_I.
+// polarisation, so that B(u, u_ref) also gives a signed K_I. Every field,
+// extension and pair of fields is evaluated in one pass over the cells.
 #pragma once
 
 #include "fe/linear_elastic_system.h"
 #include "fracture/crack_extension.h"
 
+#include <algorithm>
+#include <cmath>
+#include <utility>
 #include <vector>
 
 namespace penny
@@ -28,42 +32,35 @@ namespace penny
     // E' = E/(1 - nu^2) converts J to K_I.
     DomainIntegral(const LinearElasticSystem<Kinematics> &system, double plane_strain_modulus);
 
-    // B(u, v) for displacements u, v loaded by the tractions t_u, t_v (J/m^2).
-    double bilinear(const DisplacementVector &u, const Traction &t_u, const DisplacementVector &v,
-                    const Traction &t_v, const CrackExtension<dim> &q) const;
-
-    // G = B(u, u) (J/m^2).
-    double energy_release_rate(const DisplacementVector &u, const Traction &t,
-                               const CrackExtension<dim> &q) const;
-
-    // |K_I| = sqrt(E' G) (Pa m^1/2).
-    double stress_intensity_factor(const DisplacementVector &u, const Traction &t,
-                                   const CrackExtension<dim> &q) const;
-
-    // Signed K_I = E' B(u, u_ref)/K_ref, with a reference solution u_ref on the
-    // same mesh whose K_ref = sqrt(E' B(u_ref, u_ref)) is known to be positive
-    // (a tension opening the gap, e.g. uniform pressure).
-    double signed_stress_intensity_factor(const DisplacementVector &u, const Traction &t,
-                                          const DisplacementVector &u_ref, const Traction &t_ref,
-                                          const CrackExtension<dim> &q) const;
-
-    // The same for many extensions (e.g. points along a 3D front) in one pass
-    // over the cells: each cell's field values are computed once for all the
-    // extensions that touch it. Each result equals that of the single-q call.
-    std::vector<double> bilinear(const DisplacementVector &u, const Traction &t_u,
-                                 const DisplacementVector &v, const Traction &t_v,
-                                 const std::vector<const CrackExtension<dim> *> &qs) const;
-    // Signed K_I of several loads (u, t) against one reference, per load and
-    // extension: the reference's integral is evaluated once.
+    // A displacement and the traction on the gap faces that loads it.
     struct Load
     {
       const DisplacementVector *u;
       const Traction           *t;
     };
-    std::vector<std::vector<double>>
-    signed_stress_intensity_factors(const std::vector<Load> &loads, const DisplacementVector &u_ref,
-                                    const Traction                                 &t_ref,
-                                    const std::vector<const CrackExtension<dim> *> &qs) const;
+
+    // B(u_a, u_b) (J/m^2) for each pair (a, b) of `loads` and each extension,
+    // in one pass over the cells that evaluates each field once per cell:
+    // [pair][extension]. G = B(u, u).
+    std::vector<std::vector<double>> bilinear(const std::vector<Load>                                  &loads,
+                                              const std::vector<std::pair<unsigned int, unsigned int>> &pairs,
+                                              const std::vector<const CrackExtension<dim> *> &qs) const;
+
+    // K_I of several loads against a reference load whose K_ref is known to
+    // be positive (a tension opening the gap, e.g. uniform pressure), for each
+    // extension, in one pass.
+    struct StressIntensities
+    {
+      std::vector<double>              reference;            // K_ref = sqrt(E' B(u_ref, u_ref)) (Pa m^1/2)
+      std::vector<std::vector<double>> signed_sifs;          // [load][extension]: E' B(u, u_ref)/K_ref
+      std::vector<std::vector<double>> energy_release_rates; // [load][extension]: B(u, u), if asked for
+    };
+    StressIntensities stress_intensities(const std::vector<Load> &loads, const Load &reference,
+                                         const std::vector<const CrackExtension<dim> *> &qs,
+                                         bool with_energy_release_rates = false) const;
+
+    // |K_I| = sqrt(E' G) (Pa m^1/2).
+    double stress_intensity_factor(const double G) const { return std::sqrt(e_prime * std::max(G, 0.)); }
 
   private:
     const LinearElasticSystem<Kinematics> &system;

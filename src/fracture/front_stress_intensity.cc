@@ -32,7 +32,7 @@ namespace penny
       }
   }
 
-  // All points on all rings in one pass of the domain integral per load.
+  // All points on all rings and all loads in one pass of the domain integral.
   std::vector<std::vector<std::vector<double>>>
   FrontStressIntensity::signed_sifs(const std::vector<Load> &loads, const DisplacementVector &u_ref,
                                     const EllipticalGapModel::Traction &t_ref) const
@@ -43,7 +43,7 @@ namespace penny
         all.push_back(&q);
     std::vector<std::vector<std::vector<double>>> K;
     for (const std::vector<double> &flat :
-         j_integral.signed_stress_intensity_factors(loads, u_ref, t_ref, all))
+         j_integral.stress_intensities(loads, {&u_ref, &t_ref}, all).signed_sifs)
       {
         K.emplace_back();
         for (unsigned int r = 0, i = 0; r < extensions.size(); i += extensions[r].size(), ++r)

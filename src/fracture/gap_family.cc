@@ -24,9 +24,9 @@ namespace penny
       TimerOutput::Scope                 scope(timer, "J-integral");
       const DomainIntegral<Axisymmetric> j_integral(gap.get_system(), model.material.plane_strain_modulus());
       const RingExtension<2>             ring(gap.crack_tip(), ring_radius * c, c);
-      sifs = {j_integral.stress_intensity_factor(u_ref, face_traction(reference), ring),
-              j_integral.signed_stress_intensity_factor(u, face_traction(load), u_ref,
-                                                        face_traction(reference), ring)};
+      const DomainIntegral<Axisymmetric>::Traction t = face_traction(load), t_ref = face_traction(reference);
+      const auto K = j_integral.stress_intensities({{&u, &t}}, {&u_ref, &t_ref}, {&ring});
+      sifs         = {K.reference[0], K.signed_sifs[0][0]};
     }
     if (evaluated)
       evaluated(c);

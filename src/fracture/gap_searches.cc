@@ -5,6 +5,7 @@
 
 #include <boost/math/tools/minima.hpp>
 
+#include <limits>
 #include <stdexcept>
 
 namespace penny
@@ -25,9 +26,14 @@ namespace penny
 
   AdhesiveMinimum fe_adhesive_minimum(GapFamily &gaps, const double R_p, const double K_Ic)
   {
-    const auto tension = [&](const double c) {
+    // Brent's method returns the evaluated point of least tension: kept with its K_I.
+    AdhesiveMinimum least{0, std::numeric_limits<double>::infinity(), 0};
+    const auto      tension = [&](const double c) {
       const UnitLoadSifs K = gaps.unit_load_sifs(c);
-      return (K_Ic + K.quadratic / (2 * R_p)) / K.uniform;
+      const double       P = (K_Ic + K.quadratic / (2 * R_p)) / K.uniform;
+      if (P <= least.tension) // as Boost keeps the later of equal values
+        least = {c, P, K.uniform};
+      return P;
     };
     const double   scale      = adhesion_length(R_p, K_Ic);
     std::uintmax_t iterations = 100;
@@ -38,7 +44,10 @@ namespace penny
       throw std::runtime_error("adhesive minimum: Brent's method did not converge in 100 steps");
     if (c_min < 0.26 * scale || c_min > 3.9 * scale)
       throw std::runtime_error("adhesive minimum: the minimum lies at the end of the search interval");
-    return {c_min, p0};
+    if (c_min != least.gap_radius || p0 != least.tension)
+      throw std::logic_error(
+          "adhesive minimum: Brent's method returned a point other than the least it evaluated");
+    return least;
   }
 
   std::optional<double> fe_stable_gap_radius(GapFamily &gaps, const double P, const double R_p,
@@ -52,6 +61,7 @@ namespace penny
     };
     if (P == minimum.tension)
       return minimum.gap_radius;
-    return root_above(excess, minimum.gap_radius, excess(minimum.gap_radius));
+    // At the minimum's gap the excess is (P - p0) K_uniform, positive: no solve needed.
+    return root_above(excess, minimum.gap_radius, (P - minimum.tension) * minimum.uniform_sif);
   }
 } // namespace penny

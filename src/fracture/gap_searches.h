@@ -12,8 +12,9 @@ namespace penny
 {
   struct AdhesiveMinimum
   {
-    double gap_radius; // c_min (m)
-    double tension;    // p0 = P(c_min) (Pa)
+    double gap_radius;  // c_min (m)
+    double tension;     // p0 = P(c_min) (Pa)
+    double uniform_sif; // K_I of unit uniform pressure on the gap c_min (Pa m^1/2 per Pa)
   };
 
   // Adhesionless gap: the root of the FE K_I(c) for the parabola (P, a).

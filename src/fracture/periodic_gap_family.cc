@@ -24,7 +24,8 @@ namespace penny
     TimerOutput::Scope                scope(timer, "J-integral");
     const DomainIntegral<PlaneStrain> j_integral(gap.get_system(), model.material.plane_strain_modulus());
     const RingExtension<2> ring(gap.crack_tip(), ring_radius * gap.get_parameters().tip_distance(), 1);
-    return {j_integral.signed_stress_intensity_factor(u_cosine, cosine, u_uniform, uniform, ring),
-            j_integral.stress_intensity_factor(u_uniform, uniform, ring)};
+    const DomainIntegral<PlaneStrain>::Traction t_cosine = cosine, t_uniform = uniform;
+    const auto K = j_integral.stress_intensities({{&u_cosine, &t_cosine}}, {&u_uniform, &t_uniform}, {&ring});
+    return {K.signed_sifs[0][0], K.reference[0]};
   }
 } // namespace penny

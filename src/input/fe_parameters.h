@@ -76,6 +76,9 @@ namespace penny
   struct FiniteElementParameters
   {
     unsigned int degree;
+    // Cells c/2^k wide get degree max(1, degree - floor(k / levels_per_degree));
+    // 0: the degree on every cell.
+    unsigned int levels_per_degree;
 
     static void declare(dealii::ParameterHandler &prm);
     void        parse(dealii::ParameterHandler &prm);

@@ -57,7 +57,7 @@ namespace penny
     DataOutBase::VtkFlags flags;
     flags.write_higher_order_cells = true;
     flags.physical_units           = {{"u", "m"}};
-    data_out.build_patches(system.get_mapping(), system.get_fe().degree, DataOut<3>::curved_inner_cells);
+    data_out.build_patches(system.get_mapping()[0], system.degree(), DataOut<3>::curved_inner_cells);
     write_vtu(data_out, "solution", flags, results, system.get_communicator());
     results.write("front.vtu", polyline_vtu(front_points, front_data));
   }

@@ -8,9 +8,13 @@
 
 #include <deal.II/base/function.h>
 #include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
 #include <deal.II/fe/mapping_q_eulerian.h>
+#include <deal.II/hp/fe_values.h>
 #include <deal.II/numerics/data_out.h>
 #include <deal.II/numerics/data_postprocessor.h>
 #include <deal.II/numerics/vector_tools.h>
@@ -117,7 +121,7 @@ namespace penny
                     const RingExtension<2> &ring, const Point<2> &tip, const ResultFolder &results)
   {
     const auto        &dof_handler = system.get_dof_handler();
-    const unsigned int degree      = system.get_fe().degree;
+    const unsigned int degree      = system.degree();
     const auto         add_fields  = [&](VtuPieces<2> &data_out, const FieldPostprocessor &fields) {
       data_out.attach_dof_handler(dof_handler);
       data_out.add_data_vector(displacement, std::vector<std::string>(2, "u"), DataOut<2>::type_dof_data,
@@ -133,12 +137,16 @@ namespace penny
     write_vtu(whole, "solution", field_vtk_flags(), results, system.get_communicator());
 
     // The tip frame: the same fields on the cells near the tip, drawn through
-    // a mapping whose displacement is the affine map x -> (x - tip)/c.
-    TrilinosWrappers::MPI::Vector owned_shift(dof_handler.locally_owned_dofs(), system.get_communicator());
-    VectorTools::interpolate(dof_handler, TipFrameShift(tip), owned_shift);
-    DisplacementVector shift(displacement);
+    // a mapping whose displacement is the affine map x -> (x - tip)/c, exact
+    // in bilinear elements on the straight-sided cells.
+    DoFHandler<2> frame_dofs(dof_handler.get_triangulation());
+    frame_dofs.distribute_dofs(FESystem<2>(FE_Q<2>(1), 2));
+    TrilinosWrappers::MPI::Vector owned_shift(frame_dofs.locally_owned_dofs(), system.get_communicator());
+    VectorTools::interpolate(frame_dofs, TipFrameShift(tip), owned_shift);
+    DisplacementVector shift(frame_dofs.locally_owned_dofs(),
+                             DoFTools::extract_locally_relevant_dofs(frame_dofs), system.get_communicator());
     shift = owned_shift;
-    const MappingQEulerian<2, DisplacementVector> tip_frame(degree, dof_handler, shift);
+    const MappingQEulerian<2, DisplacementVector> tip_frame(1, frame_dofs, shift);
     const FieldPostprocessor                      in_tip_frame(system.get_elasticity(), ring, tip, tip[0]);
     VtuPieces<2>                                  near_tip;
     add_fields(near_tip, in_tip_frame);
@@ -155,10 +163,14 @@ namespace penny
                              const double gap_radius, const double plane_strain_modulus,
                              const ResultFolder &results)
   {
-    const QGaussLobatto<1> ends_and_middle(3);
-    FEFaceValues<2> fe_face(system.get_fe(), ends_and_middle, update_values | update_quadrature_points);
+    // Each face's ends and middle, whatever the element's degree.
+    hp::QCollection<1> ends_and_middle;
+    for (unsigned int i = 0; i < system.get_fe().size(); ++i)
+      ends_and_middle.push_back(QGaussLobatto<1>(3));
+    hp::FEFaceValues<2>                    fe_face(system.get_mapping(), system.get_fe(), ends_and_middle,
+                                                   update_values | update_quadrature_points);
     const FEValuesExtractors::Vector       u(0);
-    std::vector<Tensor<1, 2>>              values(ends_and_middle.size());
+    std::vector<Tensor<1, 2>>              values(3);
     std::vector<std::pair<double, double>> profile; // (r, u_z)
     for_each_boundary_face(system.get_dof_handler(), boundary_id::gap_face, fe_face,
                            [&](const auto &, const FEFaceValues<2> &face) {

@@ -35,9 +35,11 @@ namespace penny
     const auto          exact   = exact_gap_law(exact_gaps.adhesion);
     std::vector<double> fe_areas, exact_areas;
     Table               gap_table({{"P/sqrtV"}, {"c_t FE (m)"}, {"c_t closed form (m)"}, {"relative error"}});
-    // fe_P[0] sqrt(V) may round a hair below the FE p0.
-    const auto tension = [&](const unsigned int j) { return std::max(fe_P[j] * sqrt_V, minimum.tension); };
-    const auto radii   = spread_over_ranks(MPI_COMM_WORLD, fe_P.size(), [&](const unsigned int j) {
+    // P = p0 + t^2 sqrt(V): exactly the FE p0 at t = 0, whose gap is the minimum's.
+    const auto tension = [&](const unsigned int j) {
+      return minimum.tension + (fe_P[j] - fe_gaps.adhesion) * sqrt_V;
+    };
+    const auto radii        = spread_over_ranks(MPI_COMM_WORLD, fe_P.size(), [&](const unsigned int j) {
       return std::vector<double>{*fe_stable_gap_radius(search.gaps, tension(j), R_p, K_Ic, minimum)};
     });
     double     worst_radius = 0;

@@ -110,13 +110,20 @@ namespace penny
       TimerOutput::Scope                 scope(timer, "J-integral");
       const double                       e_prime = model.material().plane_strain_modulus();
       const DomainIntegral<Axisymmetric> j_integral(model.get_system(), e_prime);
+      // All rings in one pass over the cells.
+      std::vector<RingExtension<2>> rings;
       for (const double rho : ring_radii)
+        rings.emplace_back(model.crack_tip(), rho * c, c);
+      std::vector<const CrackExtension<2> *> extensions;
+      for (const auto &ring : rings)
+        extensions.push_back(&ring);
+      const DomainIntegral<Axisymmetric>::Traction t = face_traction(load), t_ref = face_traction(reference);
+      const auto K = j_integral.stress_intensities({{&u, &t}}, {&u_ref, &t_ref}, extensions, true);
+      for (unsigned int i = 0; i < ring_radii.size(); ++i)
         {
-          const RingExtension<2> ring(model.crack_tip(), rho * c, c);
-          const double           G = j_integral.energy_release_rate(u, face_traction(load), ring);
-          results.rings.push_back({rho, G, std::sqrt(e_prime * std::max(G, 0.)),
-                                   j_integral.signed_stress_intensity_factor(
-                                       u, face_traction(load), u_ref, face_traction(reference), ring)});
+          const double G = K.energy_release_rates[0][i];
+          results.rings.push_back(
+              {ring_radii[i], G, j_integral.stress_intensity_factor(G), K.signed_sifs[0][i]});
         }
       results.opening_at_centre = model.opening_at_centre(u);
       results.gap_volume        = model.gap_volume(u);

@@ -16,8 +16,11 @@ namespace penny
 
   PennyGapModelParameters penny_gap_model(const Parameters &parameters)
   {
-    return {parameters.geometry.value(), parameters.material.value(), parameters.mesh.value(),
-            parameters.finite_element.value().degree, parameters.linear_solver.value()};
+    PennyGapModelParameters model{parameters.geometry.value(), parameters.material.value(),
+                                  parameters.mesh.value(), parameters.finite_element.value().degree,
+                                  parameters.linear_solver.value()};
+    model.levels_per_degree = parameters.finite_element.value().levels_per_degree;
+    return model;
   }
 
   unsigned int GapSearch::n_solves() const

@@ -141,18 +141,25 @@ namespace penny
       TimerOutput::Scope                scope(timer, "J-integral");
       const double                      e_prime = model.material.plane_strain_modulus();
       const DomainIntegral<PlaneStrain> j_integral(gap.get_system(), e_prime);
+      // All rings in one pass over the cells.
+      std::vector<RingExtension<2>> rings;
       for (const double rho : ring_radii)
+        rings.emplace_back(gap.crack_tip(), rho * model.tip_distance(), 1);
+      std::vector<const CrackExtension<2> *> extensions;
+      for (const auto &ring : rings)
+        extensions.push_back(&ring);
+      using Traction   = DomainIntegral<PlaneStrain>::Traction;
+      const Traction t = load, t_cosine = cosine, t_uniform = uniform;
+      const auto     K = j_integral.stress_intensities({{&u, &t}, {&u_cosine, &t_cosine}},
+                                                       {&u_uniform, &t_uniform}, extensions, true);
+      for (unsigned int i = 0; i < ring_radii.size(); ++i)
         {
-          const RingExtension<2> ring(gap.crack_tip(), rho * model.tip_distance(), 1);
-          const double           G = j_integral.energy_release_rate(u, load, ring);
+          const double G = K.energy_release_rates[0][i];
           results.rings.push_back(
-              {rho, G, std::sqrt(e_prime * std::max(G, 0.)),
-               j_integral.signed_stress_intensity_factor(u, load, u_uniform, uniform, ring)});
+              {ring_radii[i], G, j_integral.stress_intensity_factor(G), K.signed_sifs[0][i]});
         }
-      const RingExtension<2> last(gap.crack_tip(), ring_radii.back() * model.tip_distance(), 1);
-      results.cosine_sif =
-          j_integral.signed_stress_intensity_factor(u_cosine, cosine, u_uniform, uniform, last);
-      results.uniform_sif = j_integral.stress_intensity_factor(u_uniform, uniform, last);
+      results.cosine_sif  = K.signed_sifs[1].back();
+      results.uniform_sif = K.reference.back();
     }
     const double c = model.gap_half_width;
     results.exact_stress_intensity_factor =

@@ -197,7 +197,7 @@ namespace penny
 
     // 5. Solvers: CG with AMG against the direct solver on the same system.
     for (const unsigned int levels : {20u, 30u})
-      cases.push_back({"solvers", setting("CG + AMG vs UMFPACK, tip levels ", levels),
+      cases.push_back({"solvers", setting("CG + AMG vs direct, tip levels ", levels),
                        "vs direct, ring by ring", 1e-8, [&, levels] {
                          const auto on_same_system = [=](Setting &s) {
                            s.model.degree          = 2;

@@ -12,14 +12,37 @@ namespace penny
     MPI_Comm_rank(communicator, &rank);
     MPI_Comm_size(communicator, &size);
 
+    // The counter of drawn indices, in a one-sided window on rank 0.
+    MPI_Win       window;
+    unsigned int *counter = nullptr;
+    MPI_Win_allocate(rank == 0 ? sizeof(unsigned int) : 0, sizeof(unsigned int), MPI_INFO_NULL, communicator,
+                     &counter, &window);
+    if (rank == 0)
+      {
+        MPI_Win_lock(MPI_LOCK_EXCLUSIVE, 0, 0, window);
+        *counter = 0;
+        MPI_Win_unlock(0, window);
+      }
+    MPI_Barrier(communicator);
+    const auto draw = [&]() {
+      const unsigned int one = 1;
+      unsigned int       index;
+      MPI_Win_lock(MPI_LOCK_SHARED, 0, 0, window);
+      MPI_Fetch_and_op(&one, &index, MPI_UNSIGNED, 0, 0, MPI_SUM, window);
+      MPI_Win_unlock(0, window);
+      return index;
+    };
+
     std::vector<double> packed;
-    for (unsigned int index = rank; index < n; index += size)
+    for (unsigned int index = draw(); index < n; index = draw())
       {
         const std::vector<double> row = piece(index);
         packed.push_back(index);
         packed.push_back(row.size());
         packed.insert(packed.end(), row.begin(), row.end());
       }
+
+    MPI_Win_free(&window);
 
     int              length = packed.size();
     std::vector<int> lengths(size), offsets(size);

@@ -14,8 +14,10 @@
 
 namespace penny
 {
-  // Rank r computes the indices r, r + size, r + 2 size, ... < n;
-  // each result is a row of doubles (any length). Returns all rows, indexed
+  // Each rank computes pieces until none is left, drawing the next index
+  // from a counter on rank 0 whenever it is free (dynamic scheduling: pieces
+  // of unequal cost balance themselves); piece(i) must depend on i alone.
+  // Each result is a row of doubles (any length). Returns all rows, indexed
   // by piece, on every rank.
   std::vector<std::vector<double>>
   spread_over_ranks(MPI_Comm communicator, unsigned int n,
