@@ -220,27 +220,34 @@ BOOST_AUTO_TEST_CASE(galin_tractions_against_known_cases)
 // is a minimum of P over the shapes with K_I = K_Ic at both ends.
 BOOST_AUTO_TEST_CASE(summit_searches_on_the_closed_form)
 {
-  const EllipticalGapSifs     galin  = galin_unit_load_sifs;
-  const AdhesionlessSummitGap circle = find_adhesionless_summit_gap(galin, 1);
+  const EllipticalGapSifs galin = galin_unit_load_sifs;
+  const auto              ends  = [&](const double s) {
+    const auto K = galin(s, {0., M_PI / 2});
+    return std::array<EllipticalUnitLoadSifs, 2>{{K[0], K[1]}};
+  };
+  BOOST_TEST(adhesionless_summit_shape(galin, 1) == 1.);
+  const AdhesionlessSummitGap circle = adhesionless_gap(1, ends(1));
   BOOST_TEST(circle.a_over_Ax == std::sqrt(1.5), tt::tolerance(1e-10));
   BOOST_TEST(circle.area_ratio == 1.5, tt::tolerance(1e-10));
-  BOOST_TEST(find_adhesive_summit_minimum(galin, 1, 1).tension == 1.2020809449045589, tt::tolerance(1e-10));
+  BOOST_TEST(adhesive_summit_shape(galin, 1, 1) == 1.);
+  BOOST_TEST(adhesive_gap(1, 1, ends(1)).tension == 1.2020809449045589, tt::tolerance(1e-10));
 
   const double                rho = 0.5;
-  const AdhesionlessSummitGap gap = find_adhesionless_summit_gap(galin, rho);
+  const double                s0  = adhesionless_summit_shape(galin, rho);
+  const AdhesionlessSummitGap gap = adhesionless_gap(s0, ends(s0));
   BOOST_TEST(gap.tension_aspect_ratio == rho, tt::tolerance(1e-5));
   BOOST_TEST(gap.aspect_ratio > rho); // the gap is rounder than its tension region
   for (const auto &K : galin(gap.aspect_ratio, front_point_angles(7)))
     BOOST_TEST(std::abs(gap.relative_sif(K)) < 1e-9);
 
-  const AdhesiveSummitGap adhesive = find_adhesive_summit_minimum(galin, rho, gap.aspect_ratio);
+  const double            s1       = adhesive_summit_shape(galin, rho, s0);
+  const AdhesiveSummitGap adhesive = adhesive_gap(s1, rho, ends(s1));
   for (const double phi : {0., M_PI / 2})
     BOOST_TEST(adhesive.relative_sif(galin(adhesive.aspect_ratio, {phi})[0]) == 1., tt::tolerance(1e-10));
   for (const double step : {-0.02, 0.02})
     {
       const double s = adhesive.aspect_ratio + step;
-      const auto   K = galin(s, {0., M_PI / 2});
-      BOOST_TEST(adhesive_gap(s, rho, {{K[0], K[1]}}).tension > adhesive.tension);
+      BOOST_TEST(adhesive_gap(s, rho, ends(s)).tension > adhesive.tension);
     }
   BOOST_TEST(adhesive.tension > 1.2020809449045589);
 }

@@ -64,6 +64,14 @@ namespace penny
                                  const std::array<EllipticalUnitLoadSifs, 2> &ends)
   {
     const auto &[k0, k1] = ends;
+    if (rho == 1)
+      {
+        // P(a) = (1 + a^(5/2) g)/(a^(1/2) K) for every circle; both ends of the front averaged.
+        const double K = (k0.uniform + k1.uniform) / 2;
+        const double g = (k0.xx + k0.yy + k1.xx + k1.yy) / 4;
+        const double a = std::pow(1 / (4 * g), 0.4);
+        return {s, 1, a, (1 + std::pow(a, 2.5) * g) / (std::sqrt(a) * K)};
+      }
     const double g0 = (rho * k0.xx + k0.yy / rho) / 2, g1 = (rho * k1.xx + k1.yy / rho) / 2;
     const double a_to_5_2 = (1 / k1.uniform - 1 / k0.uniform) / (g0 / k0.uniform - g1 / k1.uniform);
     const double infinity = std::numeric_limits<double>::infinity();
@@ -79,10 +87,10 @@ namespace penny
     return tension * std::sqrt(a) * K.uniform - std::pow(a, 2.5) * (rho * K.xx + K.yy / rho) / 2;
   }
 
-  AdhesionlessSummitGap find_adhesionless_summit_gap(const EllipticalGapSifs &sifs, const double rho)
+  double adhesionless_summit_shape(const EllipticalGapSifs &sifs, const double rho)
   {
     if (rho == 1)
-      return adhesionless_gap(1, front_ends(sifs, 1));
+      return 1;
     // Ay/Ax - rho is 1 - rho > 0 at s = 1 (the circle); halve s until it turns negative.
     const auto excess = [&](const double s) {
       return adhesionless_gap(s, front_ends(sifs, s)).tension_aspect_ratio - rho;
@@ -97,23 +105,14 @@ namespace penny
         excess_hi = excess_lo;
         lo /= 2;
       }
-    const double s = bracketed_root(excess, lo, hi, excess_lo, excess_hi, shape_bits);
-    return adhesionless_gap(s, front_ends(sifs, s));
+    return bracketed_root(excess, lo, hi, excess_lo, excess_hi, shape_bits);
   }
 
-  AdhesiveSummitGap find_adhesive_summit_minimum(const EllipticalGapSifs &sifs, const double rho,
-                                                 const double adhesionless_aspect_ratio)
+  double adhesive_summit_shape(const EllipticalGapSifs &sifs, const double rho,
+                               const double adhesionless_aspect_ratio)
   {
     if (rho == 1)
-      {
-        // Every circle has K_I = K_Ic along its front for its P(a) = (1 + a^(5/2) g)/(a^(1/2) K);
-        // the least P is at a^(5/2) = 1/(4 g). Both ends of the FE front are averaged.
-        const auto   ends = front_ends(sifs, 1);
-        const double K    = (ends[0].uniform + ends[1].uniform) / 2;
-        const double g    = (ends[0].xx + ends[0].yy + ends[1].xx + ends[1].yy) / 4;
-        const double a    = std::pow(1 / (4 * g), 0.4);
-        return {1, 1, a, (1 + std::pow(a, 2.5) * g) / (std::sqrt(a) * K)};
-      }
+      return 1;
     const auto tension = [&](const double s) { return adhesive_gap(s, rho, front_ends(sifs, s)).tension; };
     std::uintmax_t iterations = 100;
     const auto [s, P]         = boost::math::tools::brent_find_minima(tension, adhesionless_aspect_ratio, 1.,
@@ -123,6 +122,6 @@ namespace penny
     if (!std::isfinite(P))
       throw std::runtime_error("elliptical summit: no adhesive equilibrium for Ay/Ax = " +
                                std::to_string(rho));
-    return adhesive_gap(s, rho, front_ends(sifs, s));
+    return s;
   }
 } // namespace penny

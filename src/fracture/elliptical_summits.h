@@ -66,17 +66,19 @@ namespace penny
     double relative_sif(const EllipticalUnitLoadSifs &K) const;
   };
   // Nothing in range (a of either sign undefined) is returned as tension +inf.
+  // For the circle (Ay/Ax = 1, then s = 1) every a has K_I = K_Ic at both ends
+  // for its own P; the least P, at a^(5/2) = 1/(4 g), is returned.
   AdhesiveSummitGap adhesive_gap(double aspect_ratio, double tension_aspect_ratio,
                                  const std::array<EllipticalUnitLoadSifs, 2> &ends);
 
-  // The searches over s (each evaluation one call of `sifs` at phi = 0, pi/2):
-  // the root of Ay/Ax(s) = tension_aspect_ratio, and the minimum over s of P.
-  // The adhesive gaps of a summit lie between its adhesionless shape s_0
-  // (where a grows without bound) and the circle (where a shrinks to 0), so
-  // the minimum is sought on (s_0, 1). The circle Ay/Ax = 1 is s = 1 by
-  // symmetry; its minimum over a is explicit.
-  AdhesionlessSummitGap find_adhesionless_summit_gap(const EllipticalGapSifs &sifs,
-                                                     double                   tension_aspect_ratio);
-  AdhesiveSummitGap find_adhesive_summit_minimum(const EllipticalGapSifs &sifs, double tension_aspect_ratio,
-                                                 double adhesionless_aspect_ratio);
+  // The searches over s return the shape b/a (each evaluation one call of
+  // `sifs` at phi = 0, pi/2; the gap itself then comes from the ends of the
+  // front at that shape): the root of Ay/Ax(s) = tension_aspect_ratio, and
+  // the minimum over s of P. The adhesive gaps of a summit lie between its
+  // adhesionless shape s_0 (where a grows without bound) and the circle
+  // (where a shrinks to 0), so the minimum is sought on (s_0, 1). The circle
+  // Ay/Ax = 1 is s = 1 by symmetry.
+  double adhesionless_summit_shape(const EllipticalGapSifs &sifs, double tension_aspect_ratio);
+  double adhesive_summit_shape(const EllipticalGapSifs &sifs, double tension_aspect_ratio,
+                               double adhesionless_aspect_ratio);
 } // namespace penny

@@ -252,15 +252,20 @@ namespace penny
   {
     const Table::Format ratio_digits{8, false}, estimate_digits{2, true};
 
-    // The searches and the front of the gaps found, by one method.
+    // The searches and the front of the gaps found, by one method: one call
+    // of `sifs` per shape found, along the front from phi = 0 to pi/2.
     SummitGaps summit_gaps(const EllipticalGapSifs &sifs, const double rho, const std::vector<double> &angles)
     {
-      SummitGaps gaps;
-      gaps.adhesionless = find_adhesionless_summit_gap(sifs, rho);
-      gaps.adhesive     = find_adhesive_summit_minimum(sifs, rho, gaps.adhesionless.aspect_ratio);
-      for (const auto &K : sifs(gaps.adhesionless.aspect_ratio, angles))
+      SummitGaps   gaps;
+      const double s0     = adhesionless_summit_shape(sifs, rho);
+      const auto   front0 = sifs(s0, angles);
+      gaps.adhesionless   = adhesionless_gap(s0, {{front0.front(), front0.back()}});
+      const double s1     = adhesive_summit_shape(sifs, rho, s0);
+      const auto   front1 = sifs(s1, angles);
+      gaps.adhesive       = adhesive_gap(s1, rho, {{front1.front(), front1.back()}});
+      for (const auto &K : front0)
         gaps.adhesionless_front.push_back(gaps.adhesionless.relative_sif(K));
-      for (const auto &K : sifs(gaps.adhesive.aspect_ratio, angles))
+      for (const auto &K : front1)
         gaps.adhesive_front.push_back(gaps.adhesive.relative_sif(K));
       return gaps;
     }
