@@ -1,17 +1,14 @@
 #!/usr/bin/env bash
 # Wall time of a sweep scene on 1 and on 2 MPI ranks, the speed-up, and
-# whether the tables agree byte for byte (the searches are spread over the
-# ranks, each on models of its own rank).
-# Usage: postprocess/benchmark_sweeps.sh build/penny [SCENE.prm] [TABLE.csv...]
-# (default: prms/fe-gap-area.prm, fe-gap-area.csv and fe-gap-table.csv).
-# Run it on an otherwise idle machine: a second rank shares the cores with
-# whatever else runs.
+# whether the results agree: every CSV table, run times and memory aside
+# (postprocess/compare_results.py), must be identical, number for number.
+# Usage: postprocess/benchmark_sweeps.sh build/penny [SCENE.prm]
+# (default: prms/fe-gap-area.prm). Run it on an otherwise idle machine: a
+# second rank shares the cores with whatever else runs.
 set -euo pipefail
 penny=$(realpath "$1")
 scene=$(realpath "${2:-prms/fe-gap-area.prm}")
-shift $(($# < 2 ? $# : 2))
-tables=("$@")
-[ ${#tables[@]} -gt 0 ] || tables=(fe-gap-area.csv fe-gap-table.csv)
+compare=$(dirname "$(realpath "$0")")/compare_results.py
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -24,11 +21,12 @@ for ranks in 1 2; do
     { echo "the run on $ranks rank(s) failed:"; tail -5 "$work/$ranks/log"; exit 1; }
   seconds[$ranks]=$(echo "$(date +%s.%N) - $start" | bc)
 done
-identical=yes
-for table in "${tables[@]}"; do
-  cmp -s "$work/1/out/$table" "$work/2/out/$table" || identical=no
-done
-printf "scene %s\n1 rank: %.1f s, 2 ranks: %.1f s, speed-up %.2f; tables identical: %s\n" \
+identical=no
+if /usr/bin/python3 "$compare" "$work/1/out" "$work/2/out" > "$work/comparison"; then
+  grep -qv 'largest deviation 0.0e+00$' "$work/comparison" || identical=yes
+fi
+printf "scene %s\n1 rank: %.1f s, 2 ranks: %.1f s, speed-up %.2f; results identical: %s\n" \
   "$(basename "$scene")" "${seconds[1]}" "${seconds[2]}" "$(echo "${seconds[1]} / ${seconds[2]}" | bc -l)" "$identical"
+[ $identical = yes ] || cat "$work/comparison"
 echo "load average: $(cut -d' ' -f1-3 /proc/loadavg) ($(nproc) cores)"
 [ $identical = yes ]

@@ -169,11 +169,11 @@ namespace penny
     return Utilities::MPI::sum(value, get_communicator());
   }
 
-  template <typename Kinematics> std::string LinearElasticSystem<Kinematics>::solver_name() const
+  std::string solver_name(const LinearSolverParameters &linear_solver, const MPI_Comm communicator)
   {
     if (linear_solver.type == LinearSolverParameters::Type::cg_amg)
       return "CG + AMG";
-    return Utilities::MPI::n_mpi_processes(get_communicator()) == 1 ? "CHOLMOD" : "MUMPS";
+    return Utilities::MPI::n_mpi_processes(communicator) == 1 ? "CHOLMOD" : "MUMPS";
   }
 
   // The zero displacements and the hanging nodes of a locally refined mesh.

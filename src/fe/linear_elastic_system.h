@@ -59,6 +59,10 @@ namespace penny
   // The sparse Cholesky factors of the stiffness matrix on one rank (CHOLMOD).
   struct SerialCholesky;
 
+  // "CHOLMOD" (direct, one MPI rank), "MUMPS" (direct, several) or "CG + AMG":
+  // the solver of a system on the ranks of `communicator`.
+  std::string solver_name(const LinearSolverParameters &linear_solver, MPI_Comm communicator);
+
   template <typename Kinematics> class LinearElasticSystem
   {
   public:
@@ -112,8 +116,7 @@ namespace penny
     // Entries of the stiffness matrix, all ranks together.
     std::size_t n_matrix_entries() const { return stiffness.n_nonzero_elements(); }
 
-    // "CHOLMOD" (one MPI rank), "MUMPS" (several) or "CG + AMG".
-    std::string solver_name() const;
+    std::string solver_name() const { return penny::solver_name(linear_solver, get_communicator()); }
 
     // The last component of u (u_z) at the origin, which must be a vertex:
     // read on the rank that owns that degree of freedom, known on every rank.

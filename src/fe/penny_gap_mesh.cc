@@ -3,8 +3,8 @@
 #include "fe/boundary_ids.h"
 #include "fe/problem_size.h"
 #include "fe/tip_graded_mesh.h"
-#include "input/collective.h"
 #include "input/input_error.h"
+#include "parallel/collective.h"
 
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>

@@ -83,7 +83,7 @@ namespace penny
 
   PeriodicGapModel::PeriodicGapModel(const PeriodicGapModelParameters &parameters, TimerOutput &timer)
       : parameters(parameters),
-        triangulation(MPI_COMM_WORLD, Triangulation<2>::limit_level_difference_at_vertices),
+        triangulation(parameters.communicator, Triangulation<2>::limit_level_difference_at_vertices),
         system(meshed(triangulation, parameters, timer), parameters.degree, 1, parameters.material,
                parameters.linear_solver, zero_displacements(), timer)
   {

@@ -31,6 +31,9 @@ namespace penny
     MaterialParameters     material;
     unsigned int           degree;
     LinearSolverParameters linear_solver;
+    // The ranks that share the model: all of them, or one alone when a sweep
+    // gives each rank its own solves.
+    MPI_Comm communicator = MPI_COMM_WORLD;
 
     // The same model with the gap half-width c.
     PeriodicGapModelParameters with_gap_half_width(double c) const;

@@ -1,7 +1,11 @@
 // The family of penny-gap models indexed by the gap radius c: for each c the
 // scene's model is rebuilt with its domain and mesh scaled to c (R/c and H/c
-// kept), assembled, factorised and solved. Root finders and minimisers over c
-// call it; every evaluation is a full FE solve.
+// kept), on one MPI rank, assembled, factorised and solved for the two unit
+// loads. Root finders and minimisers over c call it; every evaluation is a
+// full FE solve. A batch of radii is spread over the ranks of a communicator
+// and every rank receives every result: a search on all ranks solves the
+// pair of radii of a difference quotient on two ranks at once, a search
+// inside one piece of a sweep (on MPI_COMM_SELF) solves its radii in turn.
 #pragma once
 
 #include "fe/face_load.h"
@@ -10,6 +14,7 @@
 #include <deal.II/base/timer.h>
 
 #include <functional>
+#include <vector>
 
 namespace penny
 {
@@ -18,8 +23,8 @@ namespace penny
   // K_I[P (1 - r^2/a^2)] = P K_uniform - (P/a^2) K_quadratic.
   struct UnitLoadSifs
   {
-    double uniform;
-    double quadratic;
+    double uniform;   // |K_I|, the reference of the interaction form
+    double quadratic; // signed, from the interaction form
   };
 
   class GapFamily
@@ -28,27 +33,18 @@ namespace penny
     // `ring_radius`: the J-integral ring, in units of c.
     GapFamily(const PennyGapModelParameters &model, double ring_radius, dealii::TimerOutput &timer);
 
-    // Signed K_I of the parabola P (1 - r^2/a^2) on a gap of radius c: the
-    // interaction form with the unit-pressure solution as reference.
-    double parabolic_stress_intensity_factor(double c, double P, double a);
+    // Both unit load cases at each radius, from one factorisation per
+    // radius; the models are spread over `ranks` (collective on them).
+    std::vector<UnitLoadSifs> unit_load_sifs(const std::vector<double> &radii, MPI_Comm ranks);
 
-    // Both unit load cases from one factorisation.
-    UnitLoadSifs unit_load_sifs(double c);
-
+    // The FE solves of this rank.
     unsigned int n_solves() const { return solves; }
 
-    // `observer(c)` is called after each evaluation, with its gap radius.
+    // `observer(c)` is called after each model this rank solves, with its gap radius.
     void observe(std::function<void(double c)> observer) { evaluated = std::move(observer); }
 
   private:
-    // |K_I| of unit pressure (the reference) and the signed K_I of `load`,
-    // both from one factorisation of the model built for radius c.
-    struct SifsWithReference
-    {
-      double reference;
-      double load;
-    };
-    SifsWithReference solve_with_reference(double c, const FaceLoad &load);
+    UnitLoadSifs solve(double c);
 
     const PennyGapModelParameters model;
     const double                  ring_radius;

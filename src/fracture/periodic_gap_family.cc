@@ -2,18 +2,41 @@
 
 #include "fracture/crack_extension.h"
 #include "fracture/domain_integral.h"
+#include "parallel/spread_over_ranks.h"
 
 namespace penny
 {
   using namespace dealii;
 
+  namespace
+  {
+    PeriodicGapModelParameters on_one_rank(PeriodicGapModelParameters model)
+    {
+      model.communicator = MPI_COMM_SELF;
+      return model;
+    }
+  } // namespace
+
   PeriodicGapFamily::PeriodicGapFamily(const PeriodicGapModelParameters &model, const double ring_radius,
                                        TimerOutput &timer)
-      : model(model), ring_radius(ring_radius), timer(timer)
+      : model(on_one_rank(model)), ring_radius(ring_radius), timer(timer)
   {
   }
 
-  SinusoidUnitSifs PeriodicGapFamily::unit_load_sifs(const double c)
+  std::vector<SinusoidUnitSifs> PeriodicGapFamily::unit_load_sifs(const std::vector<double> &half_widths,
+                                                                  const MPI_Comm             ranks)
+  {
+    const auto rows = spread_over_ranks(ranks, half_widths.size(), [&](const unsigned int i) {
+      const SinusoidUnitSifs K = solve(half_widths[i]);
+      return std::vector<double>{K.cosine, K.uniform};
+    });
+    std::vector<SinusoidUnitSifs> sifs;
+    for (const auto &row : rows)
+      sifs.push_back({row[0], row[1]});
+    return sifs;
+  }
+
+  SinusoidUnitSifs PeriodicGapFamily::solve(const double c)
   {
     const auto               cosine  = BuecknerTension::unit_cosine(model.wavelength);
     const auto               uniform = BuecknerTension::unit_uniform(model.wavelength);

@@ -1,7 +1,7 @@
 #include "output/result_folder.h"
 
-#include "input/collective.h"
 #include "input/input_error.h"
+#include "parallel/collective.h"
 
 #include <deal.II/base/mpi.h>
 

@@ -4,7 +4,6 @@
 #include "fracture/gap_searches.h"
 #include "output/table.h"
 #include "scenes/scene_support.h"
-#include "statistics/realisations.h"
 
 #include <cmath>
 
@@ -37,7 +36,8 @@ namespace penny
   {
     GapSearch    search(parameters, log);
     const double a = parameters.load->tension_radius;
-    const double c = fe_adhesionless_gap_radius(search.gaps, parameters.load->peak_tension, a);
+    const double c =
+        fe_adhesionless_gap_radius(search.gaps, parameters.load->peak_tension, a, MPI_COMM_WORLD);
 
     Table summary = Table::summary();
     summary.add_row({"c/a FE", Table::Cell(c / a, all_digits)});
@@ -56,7 +56,7 @@ namespace penny
     GapSearch             search(parameters, log);
     const double          R_p     = search.summit_radius;
     const double          K_Ic    = search.critical_stress_intensity;
-    const AdhesiveMinimum minimum = fe_adhesive_minimum(search.gaps, R_p, K_Ic);
+    const AdhesiveMinimum minimum = fe_adhesive_minimum(search.gaps, R_p, K_Ic, MPI_COMM_WORLD);
     const double          psi     = minimum.tension / adhesion_tension(R_p, K_Ic);
     const double          c_hat   = minimum.gap_radius / adhesion_length(R_p, K_Ic);
 
@@ -97,16 +97,15 @@ namespace penny
     const auto          c_hat_at = [&](const unsigned int i) {
       return range.smallest_c_hat + i * (range.largest_c_hat - range.smallest_c_hat) / (range.n_points - 1);
     };
-    // One row (K_uniform, K_quadratic) per point.
-    const auto sifs  = spread_over_ranks(MPI_COMM_WORLD, range.n_points, [&](const unsigned int i) {
-      const UnitLoadSifs K = search.gaps.unit_load_sifs(c_hat_at(i) * c_min);
-      return std::vector<double>{K.uniform, K.quadratic};
-    });
-    double     worst = 0;
+    std::vector<double> radii;
+    for (unsigned int i = 0; i < range.n_points; ++i)
+      radii.push_back(c_hat_at(i) * c_min);
+    const std::vector<UnitLoadSifs> sifs  = search.gaps.unit_load_sifs(radii, MPI_COMM_WORLD);
+    double                          worst = 0;
     for (unsigned int i = 0; i < range.n_points; ++i)
       {
         const double       c_hat  = c_hat_at(i);
-        const UnitLoadSifs K      = {sifs[i][0], sifs[i][1]};
+        const UnitLoadSifs K      = sifs[i];
         const double       p_fe   = (K_Ic + K.quadratic / (2 * R_p)) / K.uniform / p0;
         const double       exact  = (c_hat * c_hat + 4 / std::sqrt(c_hat)) / 5;
         const double       linear = c_hat * c_hat > 2.5 ? c_hat * c_hat / 5 + 0.5 : 1.;
@@ -129,8 +128,8 @@ namespace penny
     const double          P       = parameters.load->peak_tension;
     const double          R_p     = search.summit_radius;
     const double          K_Ic    = search.critical_stress_intensity;
-    const AdhesiveMinimum minimum = fe_adhesive_minimum(search.gaps, R_p, K_Ic);
-    const auto            c_t     = fe_stable_gap_radius(search.gaps, P, R_p, K_Ic, minimum);
+    const AdhesiveMinimum minimum = fe_adhesive_minimum(search.gaps, R_p, K_Ic, MPI_COMM_WORLD);
+    const auto            c_t     = fe_stable_gap_radius(search.gaps, P, R_p, K_Ic, minimum, MPI_COMM_WORLD);
 
     Table summary = Table::summary();
     summary.add_row({"peak tension P (Pa)", Table::Cell(P, all_digits)});

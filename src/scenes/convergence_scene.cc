@@ -1,5 +1,7 @@
 #include "scenes/convergence_scene.h"
 
+#include "output/progress.h"
+#include "parallel/spread_over_ranks.h"
 #include "scenes/penny_gap_scene.h"
 #include "scenes/scene_support.h"
 
@@ -9,6 +11,7 @@
 #include <cmath>
 #include <iomanip>
 #include <memory>
+#include <sstream>
 
 namespace penny
 {
@@ -67,6 +70,11 @@ namespace penny
     }
   } // namespace
 
+  // The cycles are independent except in the adaptive sequence, whose cycle
+  // k refines the mesh of cycle k - 1: they are spread over the ranks, each
+  // model on one rank, so each wall time is that of one core (the other
+  // ranks' cycles run beside it on the other cores). The adaptive cycles run
+  // in turn, each model shared by all ranks.
   std::vector<ConvergenceRow> run_convergence_scene(const Parameters &parameters, const ResultFolder &results,
                                                     std::ostream &log)
   {
@@ -88,66 +96,96 @@ namespace penny
     columns.push_back({"solver"});
     Table table(columns);
 
-    // One timer for the scene; a cycle's phases are the differences of its
-    // totals, so an adaptive refinement counts towards the cycle it builds.
+    const bool     adaptive    = sequence.strategy == Strategy::adaptive;
+    const MPI_Comm ranks       = adaptive ? MPI_COMM_WORLD : MPI_COMM_SELF; // of each model
+    auto           base        = penny_gap_model(parameters);
+    base.communicator          = ranks;
+    const LoadParameters &load = *parameters.load;
+
+    // One timer for the cycles of a rank; a cycle's phases are the
+    // differences of its totals, so an adaptive refinement counts towards the
+    // cycle it builds. A cycle's row: cells, DoFs, the setting, K_I per
+    // ring, the largest relative error, the time of each phase, the wall
+    // time and the peak memory (MiB, of the largest rank).
     TimerOutput                    timer(log, TimerOutput::never, TimerOutput::wall_times);
-    const auto                     base = penny_gap_model(parameters);
-    const LoadParameters          &load = *parameters.load;
     std::unique_ptr<PennyGapModel> adaptive_model;
-    std::vector<ConvergenceRow>    rows;
+    Progress                       progress(log, "cycles done");
+    const auto                     cycle = [&](const unsigned int k) {
+      auto before                 = timer.get_summary_data(TimerOutput::total_wall_time);
+      const auto [model, setting] = cycle_model(base, sequence, k);
+      PennySceneResults solved;
+      if (adaptive)
+        {
+          const FaceLoad face_load(load, model.geometry.gap_radius);
+          if (k == 0)
+            adaptive_model = std::make_unique<PennyGapModel>(model, timer);
+          else
+            adaptive_model->refine_by_kelly(adaptive_model->solve(face_load), sequence.refined_fraction);
+          solved = measure_penny_gap(*adaptive_model, face_load, radii, timer);
+        }
+      else
+        solved = solve_penny_gap(model, load, radii, timer);
+
+      std::vector<double> row = {double(solved.n_cells), double(solved.n_dofs), setting};
+      double              error = 0;
+      for (const auto &ring : solved.rings)
+        {
+          row.push_back(ring.signed_stress_intensity_factor);
+          error = std::max(error, relative_error(ring.signed_stress_intensity_factor,
+                                                                     solved.exact_stress_intensity_factor.value));
+        }
+      row.push_back(error);
+      auto   times = timer.get_summary_data(TimerOutput::total_wall_time);
+      double wall  = 0;
+      for (const auto &phase : phases)
+        {
+          const double seconds = times.count(phase) ? times.at(phase) - before[phase] : 0.;
+          row.push_back(seconds);
+          wall += seconds;
+        }
+      row.push_back(wall);
+      Utilities::System::MemoryStats memory;
+      Utilities::System::get_memory_stats(memory);
+      row.push_back(Utilities::MPI::max(memory.VmHWM / 1024., ranks));
+      std::ostringstream state;
+      state << setting_name(sequence.strategy) << ' ' << setting << ": DoFs " << solved.n_dofs << ", error "
+            << std::scientific << std::setprecision(3) << error;
+      progress.step(state.str());
+      return row;
+    };
+    std::vector<std::vector<double>> measured;
+    if (adaptive)
+      for (unsigned int k = 0; k < sequence.cycles; ++k)
+        measured.push_back(cycle(k));
+    else
+      measured = spread_over_ranks(MPI_COMM_WORLD, sequence.cycles, cycle);
+
+    const std::string           solver = solver_name(parameters.linear_solver.value(), ranks);
+    std::vector<ConvergenceRow> rows;
     for (unsigned int k = 0; k < sequence.cycles; ++k)
       {
-        auto before                 = timer.get_summary_data(TimerOutput::total_wall_time);
-        const auto [model, setting] = cycle_model(base, sequence, k);
-        PennySceneResults solved;
-        if (sequence.strategy == Strategy::adaptive)
-          {
-            const FaceLoad face_load(load, model.geometry.gap_radius);
-            if (k == 0)
-              adaptive_model = std::make_unique<PennyGapModel>(model, timer);
-            else
-              adaptive_model->refine_by_kelly(adaptive_model->solve(face_load), sequence.refined_fraction);
-            solved = measure_penny_gap(*adaptive_model, face_load, radii, timer);
-          }
-        else
-          solved = solve_penny_gap(model, load, radii, timer);
-
-        ConvergenceRow row{k, solved.n_cells, solved.n_dofs, setting, {}, 0, 0, 0};
-        for (const auto &ring : solved.rings)
-          {
-            row.stress_intensity_factors.push_back(ring.signed_stress_intensity_factor);
-            row.error = std::max(row.error, relative_error(ring.signed_stress_intensity_factor,
-                                                           solved.exact_stress_intensity_factor.value));
-          }
+        const auto       &m = measured[k];
+        const std::size_t n = radii.size();
+        ConvergenceRow    row{k,
+                           static_cast<unsigned int>(m[0]),
+                           static_cast<unsigned int>(m[1]),
+                           m[2],
+                           std::vector<double>(m.begin() + 3, m.begin() + 3 + n),
+                           m[3 + n],
+                           0,
+                           m[4 + n + phases.size()]};
         if (!rows.empty())
           row.rate =
               -std::log(row.error / rows.back().error) / std::log(double(row.n_dofs) / rows.back().n_dofs);
-        auto times = timer.get_summary_data(TimerOutput::total_wall_time);
-        for (auto &[phase, seconds] : times)
-          {
-            seconds -= before[phase];
-            row.wall_time += seconds;
-          }
-        Utilities::System::MemoryStats memory;
-        Utilities::System::get_memory_stats(memory);
-        const double peak_memory =
-            Utilities::MPI::max(memory.VmHWM / 1024., MPI_COMM_WORLD); // of the largest rank
-
-        std::vector<Table::Cell> cells = {k, setting, row.n_cells, row.n_dofs};
+        std::vector<Table::Cell> cells = {k, row.setting, row.n_cells, row.n_dofs};
         for (const double K : row.stress_intensity_factors)
           cells.push_back(K);
         cells.push_back(row.error);
         cells.push_back(rows.empty() ? Table::Cell("") : Table::Cell(row.rate));
-        for (const auto &phase : phases)
-          cells.push_back(times.count(phase) ? times.at(phase) : 0.);
-        cells.push_back(row.wall_time);
-        cells.push_back(peak_memory);
-        cells.push_back(solved.solver);
+        for (std::size_t i = 0; i < phases.size() + 2; ++i) // the phases, the wall time, the memory
+          cells.push_back(m[4 + n + i]);
+        cells.push_back(solver);
         table.add_row(cells);
-        log << std::setw(3) << k << "  " << setting_name(sequence.strategy) << " " << std::setw(8) << setting
-            << "  DoFs " << std::setw(8) << row.n_dofs << "  error " << std::scientific
-            << std::setprecision(3) << row.error << "  rate " << std::defaultfloat << std::setprecision(3)
-            << row.rate << "  wall " << row.wall_time << " s" << std::endl;
         rows.push_back(row);
       }
     log << '\n';

@@ -3,9 +3,9 @@
 #include "fracture/adhesive_gap.h"
 #include "fracture/gap_searches.h"
 #include "output/table.h"
+#include "parallel/spread_over_ranks.h"
 #include "scenes/scene_support.h"
 #include "statistics/contact_area.h"
-#include "statistics/realisations.h"
 
 #include <cmath>
 
@@ -23,7 +23,7 @@ namespace penny
     const double K_Ic     = search.critical_stress_intensity;
     const double p0       = closed_form::psi * adhesion_tension(R_p, K_Ic);
     const double sqrt_V   = p0 / adhesion;
-    const auto   minimum  = fe_adhesive_minimum(search.gaps, R_p, K_Ic);
+    const auto   minimum  = fe_adhesive_minimum(search.gaps, R_p, K_Ic, MPI_COMM_WORLD);
 
     const GapPopulation exact_gaps{std::sqrt(2 * M_PI), adhesion};
     const GapPopulation fe_gaps{exact_gaps.prefactor, minimum.tension / sqrt_V};
@@ -40,7 +40,8 @@ namespace penny
       return minimum.tension + (fe_P[j] - fe_gaps.adhesion) * sqrt_V;
     };
     const auto radii        = spread_over_ranks(MPI_COMM_WORLD, fe_P.size(), [&](const unsigned int j) {
-      return std::vector<double>{*fe_stable_gap_radius(search.gaps, tension(j), R_p, K_Ic, minimum)};
+      return std::vector<double>{
+          *fe_stable_gap_radius(search.gaps, tension(j), R_p, K_Ic, minimum, MPI_COMM_SELF)};
     });
     double     worst_radius = 0;
     for (unsigned int j = 0; j < fe_P.size(); ++j)

@@ -3,10 +3,10 @@
 #include "fracture/periodic_array.h"
 #include "input/input_error.h"
 #include "output/table.h"
+#include "parallel/spread_over_ranks.h"
 #include "statistics/contact_area.h"
 #include "statistics/contact_solver.h"
 #include "statistics/random_field.h"
-#include "statistics/realisations.h"
 #include "statistics/roughness.h"
 #include "statistics/summit_statistics.h"
 

@@ -47,19 +47,9 @@ namespace penny
     summary.add_row({"wall time total (s)", Table::Cell(total_wall_time(timer), Table::Format{3, false})});
   }
 
-  namespace
-  {
-    PennyGapModelParameters on_one_rank(PennyGapModelParameters model)
-    {
-      model.communicator = MPI_COMM_SELF;
-      return model;
-    }
-  } // namespace
-
   GapSearch::GapSearch(const Parameters &parameters, std::ostream &log)
       : timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times),
-        gaps(on_one_rank(penny_gap_model(parameters)), parameters.j_integral.value().ring_radii.back(),
-             timer),
+        gaps(penny_gap_model(parameters), parameters.j_integral.value().ring_radii.back(), timer),
         progress(log, "gap radii solved"), summit_radius(parameters.load.value().summit_radius),
         critical_stress_intensity(parameters.adhesion ? parameters.adhesion->critical_stress_intensity : 0)
   {

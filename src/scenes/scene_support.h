@@ -47,17 +47,17 @@ namespace penny
 
   // The scenes that search over gap radii: a timer of the phases, the family
   // of models on the scene's model (using the last J-integral ring), and a
-  // progress line as the solves go. Every model lives on one rank
-  // (MPI_COMM_SELF): a search is sequential, so each rank runs it alike, and a
-  // sweep of independent searches gives each rank its share
-  // (spread_over_ranks, statistics/realisations.h). The results do not
-  // depend on the number of ranks.
+  // progress line as the solves go. Every model lives on one rank; a search
+  // of its own shares its models out over all ranks, and a sweep of
+  // independent searches gives each rank its share of them
+  // (parallel/spread_over_ranks.h), each search on its rank alone. The
+  // results do not depend on the number of ranks.
   struct GapSearch
   {
     GapSearch(const Parameters &parameters, std::ostream &log);
     GapSearch(const GapSearch &) = delete;
 
-    // FE solves of all ranks.
+    // FE solves of all ranks (collective).
     unsigned int n_solves() const;
 
     dealii::TimerOutput timer;

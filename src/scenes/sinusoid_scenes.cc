@@ -6,6 +6,7 @@
 #include "fracture/periodic_gap_family.h"
 #include "fracture/periodic_searches.h"
 #include "output/table.h"
+#include "parallel/spread_over_ranks.h"
 #include "scenes/scene_support.h"
 
 #include <algorithm>
@@ -41,6 +42,9 @@ namespace penny
     }
 
     // The searches' timer and family of models, on the last J-integral ring.
+    // Every model lives on one rank; a search of its own shares its models
+    // out over all ranks, and a sweep of independent searches gives each
+    // rank its share of them, each search on its rank alone.
     struct PeriodicSearch
     {
       explicit PeriodicSearch(const Parameters &parameters)
@@ -50,6 +54,9 @@ namespace penny
       {
       }
 
+      // FE solves of all ranks (collective).
+      unsigned int n_solves() const { return Utilities::MPI::sum(gaps.n_solves(), MPI_COMM_WORLD); }
+
       TimerOutput       timer;
       PeriodicGapFamily gaps;
     };
@@ -57,7 +64,7 @@ namespace penny
     // The closing rows of every search: its cost.
     void add_cost(Table &summary, const PeriodicSearch &search)
     {
-      summary.add_row({"FE solves", search.gaps.n_solves()});
+      summary.add_row({"FE solves", search.n_solves()});
       add_phase_times(summary, search.timer);
     }
 
@@ -200,31 +207,40 @@ namespace penny
   std::vector<DepthStudyRow> run_periodic_gap_depth_scene(const Parameters   &parameters,
                                                           const ResultFolder &results, std::ostream &log)
   {
-    TimerOutput                timer(log, TimerOutput::never, TimerOutput::wall_times);
-    Table                      table({{"D/lambda", Table::Format{4, false}},
-                                      {"cells"},
-                                      {"DoFs"},
-                                      {"K_I signed FE (Pa m^1/2)", digits},
-                                      {"K_I exact (Pa m^1/2)", digits},
-                                      {"K_I relative error", error_digits},
-                                      {"K_cosine relative error", error_digits},
-                                      {"K_uniform relative error", error_digits}});
+    TimerOutput timer(log, TimerOutput::never, TimerOutput::wall_times);
+    Table       table({{"D/lambda", Table::Format{4, false}},
+                       {"cells"},
+                       {"DoFs"},
+                       {"K_I signed FE (Pa m^1/2)", digits},
+                       {"K_I exact (Pa m^1/2)", digits},
+                       {"K_I relative error", error_digits},
+                       {"K_cosine relative error", error_digits},
+                       {"K_uniform relative error", error_digits}});
+    // Each depth a model on one rank, the depths spread over the ranks:
+    // (cells, DoFs, K_I signed, K_I exact, errors of K_I, K_cosine, K_uniform).
+    const auto &depths = parameters.depth_study->depths;
+    const auto  solved = spread_over_ranks(MPI_COMM_WORLD, depths.size(), [&](const unsigned int i) {
+      PeriodicGapModelParameters model = periodic_gap_model(parameters, gap_half_width(parameters));
+      model.depth                      = depths[i] * model.wavelength;
+      model.communicator               = MPI_COMM_SELF;
+      const PeriodicGapResults gap =
+          solve_periodic_gap(model, scene_load(parameters), parameters.periodic_gap->ring_radii, timer);
+      const double K = gap.rings.back().signed_stress_intensity_factor;
+      return std::vector<double>{double(gap.n_cells),
+                                 double(gap.n_dofs),
+                                 K,
+                                 gap.exact_stress_intensity_factor,
+                                 relative_error(K, gap.exact_stress_intensity_factor),
+                                 relative_error(gap.cosine_sif, gap.exact_cosine_sif),
+                                 relative_error(gap.uniform_sif, gap.exact_uniform_sif)};
+    });
     std::vector<DepthStudyRow> rows;
-    for (const double depth : parameters.depth_study->depths)
+    for (unsigned int i = 0; i < depths.size(); ++i)
       {
-        PeriodicGapModelParameters model = periodic_gap_model(parameters, gap_half_width(parameters));
-        model.depth                      = depth * model.wavelength;
-        const PeriodicGapResults solved =
-            solve_periodic_gap(model, scene_load(parameters), parameters.periodic_gap->ring_radii, timer);
-        rows.push_back({depth, solved.n_dofs,
-                        relative_error(solved.rings.back().signed_stress_intensity_factor,
-                                       solved.exact_stress_intensity_factor),
-                        relative_error(solved.cosine_sif, solved.exact_cosine_sif),
-                        relative_error(solved.uniform_sif, solved.exact_uniform_sif)});
-        table.add_row({depth, solved.n_cells, solved.n_dofs,
-                       solved.rings.back().signed_stress_intensity_factor,
-                       solved.exact_stress_intensity_factor, rows.back().error, rows.back().cosine_error,
-                       rows.back().uniform_error});
+        const auto &row = solved[i];
+        rows.push_back({depths[i], static_cast<unsigned int>(row[1]), row[4], row[5], row[6]});
+        table.add_row({depths[i], static_cast<unsigned int>(row[0]), static_cast<unsigned int>(row[1]),
+                       row[2], row[3], row[4], row[5], row[6]});
       }
     log << "Truncation study: K_I of the periodic gap (c/lambda = " << parameters.gap_and_load->gap_ratio
         << ", p_bar/p* = " << parameters.gap_and_load->load_ratio
@@ -248,10 +264,14 @@ namespace penny
                               {"sin^2(pi a_FE/lambda)", all_digits},
                               {"p_bar/p* error", error_digits}});
     CurveErrors        worst{0, 0, 0};
-    for (unsigned int i = 1; i <= n; ++i)
+    const auto         load_at = [&](const unsigned int i) { return (i + 1.) / (n + 1); };
+    const auto         contact = spread_over_ranks(MPI_COMM_WORLD, n, [&](const unsigned int i) {
+      return std::vector<double>{fe_westergaard_contact_half_width(search.gaps, load_at(i), MPI_COMM_SELF)};
+    });
+    for (unsigned int i = 0; i < n; ++i)
       {
-        const double load        = static_cast<double>(i) / (n + 1);
-        const double fe_ratio    = fe_westergaard_contact_half_width(search.gaps, load) / lambda;
+        const double load        = load_at(i);
+        const double fe_ratio    = contact[i][0] / lambda;
         const double exact       = periodic_array::westergaard_contact_ratio(load);
         const double curve       = periodic_array::johnson_load(fe_ratio, 0);
         worst.largest_load_error = std::max(worst.largest_load_error, std::abs(curve - load));
@@ -259,7 +279,7 @@ namespace penny
             std::max(worst.largest_contact_ratio_error, std::abs(fe_ratio - exact));
         table.add_row({load, fe_ratio, exact, std::abs(fe_ratio - exact), curve, std::abs(curve - load)});
       }
-    worst.n_solves = search.gaps.n_solves();
+    worst.n_solves = search.n_solves();
     results.write_csv("westergaard-curve.csv", table);
     log << "Adhesionless sinusoid: contact half-width a from FE roots of K_I = 0, beside "
            "p_bar/p* = sin^2(pi a/lambda)\n";
@@ -291,10 +311,15 @@ namespace penny
                                                                {"absolute error", error_digits}});
     std::vector<double>                                worst(curves.alphas.size(), 0.);
     std::vector<std::vector<std::vector<Table::Cell>>> rows(curves.alphas.size());
-    for (unsigned int i = 1; i <= curves.n_points; ++i)
+    const auto ratio_at = [&](const unsigned int i) { return 0.5 * (i + 1) / (curves.n_points + 1); };
+    std::vector<double> half_widths;
+    for (unsigned int i = 0; i < curves.n_points; ++i)
+      half_widths.push_back((0.5 - ratio_at(i)) * lambda);
+    const std::vector<SinusoidUnitSifs> sifs = search.gaps.unit_load_sifs(half_widths, MPI_COMM_WORLD);
+    for (unsigned int i = 0; i < curves.n_points; ++i)
       {
-        const double           ratio = 0.5 * i / (curves.n_points + 1);
-        const SinusoidUnitSifs K     = search.gaps.unit_load_sifs((0.5 - ratio) * lambda);
+        const double           ratio = ratio_at(i);
+        const SinusoidUnitSifs K     = sifs[i];
         for (unsigned int k = 0; k < curves.alphas.size(); ++k)
           {
             const double fe    = fe_johnson_load(K, lambda, curves.alphas[k]);
@@ -348,7 +373,7 @@ namespace penny
     extremes.print(log);
     log << "Tables: " << results.directory().string() << "/johnson-curves.csv, johnson-closed-form.csv, "
         << "johnson-extremes.csv\n";
-    return {*std::max_element(worst.begin(), worst.end()), 0, search.gaps.n_solves()};
+    return {*std::max_element(worst.begin(), worst.end()), 0, search.n_solves()};
   }
 
   JumpIntoContactResults run_jump_into_contact_scene(const Parameters   &parameters,
@@ -356,10 +381,10 @@ namespace penny
   {
     PeriodicSearch           search(parameters);
     const double             lambda   = parameters.periodic_gap->wavelength;
-    const FeCriticalAdhesion critical = fe_critical_alpha(search.gaps);
+    const FeCriticalAdhesion critical = fe_critical_alpha(search.gaps, MPI_COMM_WORLD);
     const double             contact  = critical.contact_half_width / lambda;
     // The definition checked: at the FE alpha_c the FE maximum of p_bar/p* is zero.
-    const FeLoadExtremum at_critical = fe_jump_into_contact(search.gaps, critical.alpha);
+    const FeLoadExtremum at_critical = fe_jump_into_contact(search.gaps, critical.alpha, MPI_COMM_WORLD);
 
     Table summary = Table::summary();
     summary.add_row({"critical alpha FE", Table::Cell(critical.alpha, all_digits)});
@@ -372,7 +397,7 @@ namespace penny
     summary.add_row(
         {"a/lambda at alpha_c exact", Table::Cell(periodic_array::critical_contact_ratio, all_digits)});
     summary.add_row({"max p_bar/p* FE at the FE alpha_c", Table::Cell(at_critical.load_ratio, error_digits)});
-    const unsigned int critical_solves = search.gaps.n_solves();
+    const unsigned int critical_solves = search.n_solves();
     summary.add_row({"FE solves", critical_solves});
     log << "Critical alpha: the FE maximum over c of K_cosine(c)/sqrt(lambda), where the jump into contact "
            "reaches p_bar = 0 (spontaneous full contact at zero load)\n";
@@ -388,14 +413,18 @@ namespace penny
                        {"absolute error", error_digits},
                        {"5 (alpha/4)^(4/5)", digits},
                        {"Johnson/small-alpha law", Table::Format{6, false}}});
-    double      worst = 0;
+    double      worst   = 0;
+    const auto  maximum = spread_over_ranks(MPI_COMM_WORLD, range.n_alphas, [&](const unsigned int i) {
+      const FeLoadExtremum fe = fe_jump_into_contact(search.gaps, range.alpha(i), MPI_COMM_SELF);
+      return std::vector<double>{fe.contact_half_width, fe.load_ratio};
+    });
     for (unsigned int i = 0; i < range.n_alphas; ++i)
       {
-        const double alpha = range.alpha(i);
-        const auto   fe    = fe_jump_into_contact(search.gaps, alpha);
-        const auto   exact = periodic_array::jump_into_contact(alpha);
-        const double law   = periodic_array::small_alpha_jump(alpha);
-        worst              = std::max(worst, std::abs(fe.load_ratio - exact.load_ratio));
+        const double         alpha = range.alpha(i);
+        const FeLoadExtremum fe{maximum[i][0], maximum[i][1]};
+        const auto           exact = periodic_array::jump_into_contact(alpha);
+        const double         law   = periodic_array::small_alpha_jump(alpha);
+        worst                      = std::max(worst, std::abs(fe.load_ratio - exact.load_ratio));
         table.add_row({alpha, fe.contact_half_width / lambda, exact.contact_ratio, 1 - fe.load_ratio,
                        1 - exact.load_ratio, std::abs(fe.load_ratio - exact.load_ratio), law,
                        (1 - exact.load_ratio) / law});
@@ -408,6 +437,6 @@ namespace penny
     cost.add_row({"largest |p_bar_max/p* FE - Johnson|", Table::Cell(worst, error_digits)});
     add_cost(cost, search);
     cost.print(log);
-    return {critical.alpha, contact, worst, search.gaps.n_solves()};
+    return {critical.alpha, contact, worst, search.n_solves()};
   }
 } // namespace penny

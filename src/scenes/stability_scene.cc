@@ -1,9 +1,9 @@
 #include "scenes/stability_scene.h"
 
 #include "output/progress.h"
+#include "parallel/spread_over_ranks.h"
 #include "scenes/penny_gap_scene.h"
 #include "scenes/scene_support.h"
-#include "statistics/realisations.h"
 
 #include <deal.II/base/timer.h>
 

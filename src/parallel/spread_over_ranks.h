@@ -1,10 +1,9 @@
 // Independent pieces of work spread over the ranks of an MPI communicator:
-// realisations of a random field (each a function of its index alone, its
-// seed realisation_seed(seed, index)), or the independent searches of a
-// sweep. Every rank receives the results in index order, so every reduction
-// over them is the same on any number of ranks.
-// (Realisations are whole grids on one rank; FFTW's MPI grid splitting is not
-// used: a 1024^2 grid and its work arrays take a few tens of MB.)
+// the FE models of a batch of gap sizes, the searches of a sweep, the cases
+// of a study, realisations of a random field (each a function of its index
+// alone). Every rank receives the results in index order, so every reduction
+// over them is the same on any number of ranks. On MPI_COMM_SELF it is a
+// plain loop.
 #pragma once
 
 #include <mpi.h>

@@ -1,4 +1,4 @@
-#include "statistics/realisations.h"
+#include "parallel/spread_over_ranks.h"
 
 namespace penny
 {
