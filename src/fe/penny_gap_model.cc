@@ -4,6 +4,7 @@
 #include "fe/boundary_ids.h"
 #include "fe/penny_gap_mesh.h"
 #include "fe/problem_size.h"
+#include "fe/tip_graded_mesh.h"
 #include "input/input_error.h"
 
 #include <deal.II/base/quadrature_lib.h>
@@ -55,19 +56,6 @@ namespace penny
                          entries.str(), model.communicator);
     }
 
-    // Finite element/Degree grading: a cell c/2^k wide (k > 0) gets the degree
-    // lowered by one every `levels_per_degree` levels, down to 1.
-    LinearElasticSystem<Axisymmetric>::CellDegree graded_degree(const PennyGapModelParameters &model)
-    {
-      if (model.levels_per_degree == 0)
-        return {};
-      return [c = model.geometry.gap_radius, degree = static_cast<int>(model.degree),
-              step = static_cast<int>(model.levels_per_degree)](const auto &cell) {
-        const int k = static_cast<int>(std::round(std::log2(c / cell->extent_in_direction(0))));
-        return static_cast<unsigned int>(std::max(1, degree - std::max(k, 0) / step));
-      };
-    }
-
     // Meshed before the system that distributes its degrees of freedom on it.
     const Triangulation<2> &meshed(Triangulation<2> &triangulation, const PennyGapModelParameters &model,
                                    TimerOutput &timer)
@@ -94,7 +82,8 @@ namespace penny
         triangulation(parameters.communicator, Triangulation<2>::limit_level_difference_at_vertices),
         system(meshed(triangulation, parameters, timer), parameters.degree, 1, parameters.material,
                parameters.linear_solver, zero_displacements(parameters.geometry), timer,
-               graded_degree(parameters))
+               degree_graded_towards_tip(parameters.geometry.gap_radius, parameters.degree,
+                                         parameters.levels_per_degree))
   {
   }
 

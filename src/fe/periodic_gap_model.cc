@@ -85,7 +85,9 @@ namespace penny
       : parameters(parameters),
         triangulation(parameters.communicator, Triangulation<2>::limit_level_difference_at_vertices),
         system(meshed(triangulation, parameters, timer), parameters.degree, 1, parameters.material,
-               parameters.linear_solver, zero_displacements(), timer)
+               parameters.linear_solver, zero_displacements(), timer,
+               degree_graded_towards_tip(parameters.tip_distance(), parameters.degree,
+                                         parameters.levels_per_degree))
   {
   }
 

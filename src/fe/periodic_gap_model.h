@@ -34,6 +34,9 @@ namespace penny
     // The ranks that share the model: all of them, or one alone when a sweep
     // gives each rank its own solves.
     MPI_Comm communicator = MPI_COMM_WORLD;
+    // Finite element/Degree grading (in units of min(c, lambda/2 - c)): 0 for
+    // the degree on every cell.
+    unsigned int levels_per_degree = 0;
 
     // The same model with the gap half-width c.
     PeriodicGapModelParameters with_gap_half_width(double c) const;

@@ -74,4 +74,17 @@ namespace penny
     return std::any_of(triangulation.get_vertices().begin(), triangulation.get_vertices().end(),
                        [&](const Point<2> &v) { return v.distance(point) < tolerance; });
   }
+
+  std::function<unsigned int(const Triangulation<2>::active_cell_iterator &)>
+  degree_graded_towards_tip(const double length, const unsigned int degree,
+                            const unsigned int levels_per_degree)
+  {
+    if (levels_per_degree == 0)
+      return {};
+    return [length, degree = static_cast<int>(degree),
+            step = static_cast<int>(levels_per_degree)](const Triangulation<2>::active_cell_iterator &cell) {
+      const int k = static_cast<int>(std::round(std::log2(length / cell->extent_in_direction(0))));
+      return static_cast<unsigned int>(std::max(1, degree - std::max(k, 0) / step));
+    };
+  }
 } // namespace penny

@@ -11,6 +11,7 @@
 #include <deal.II/base/point.h>
 #include <deal.II/grid/tria.h>
 
+#include <functional>
 #include <limits>
 #include <vector>
 
@@ -38,4 +39,13 @@ namespace penny
   // Whether a vertex lies within `tolerance` of `point`.
   bool has_vertex_at(const dealii::Triangulation<2> &triangulation, const dealii::Point<2> &point,
                      double tolerance);
+
+  // The degree of each cell's element graded towards the tip (hp, Finite
+  // element/Degree grading): a cell length/2^k wide (k > 0) gets `degree`
+  // lowered by one every `levels_per_degree` levels, down to 1, so the small
+  // cells near the tip carry low degrees. `length` is the model's tip length
+  // (c for the penny gap). Empty when levels_per_degree is 0: the degree on
+  // every cell.
+  std::function<unsigned int(const dealii::Triangulation<2>::active_cell_iterator &)>
+  degree_graded_towards_tip(double length, unsigned int degree, unsigned int levels_per_degree);
 } // namespace penny

@@ -222,10 +222,10 @@ namespace penny
     prm.declare_entry("Polynomial degree", "4", Integer(1, 8),
                       "Degree of the continuous Lagrange elements for (u_r, u_z). Units: none.");
     prm.declare_entry("Degree grading", "0", Integer(0, 64),
-                      "Penny gap only: tip refinement levels per step down in degree. Cells c/2^k "
-                      "wide get degree max(1, degree - floor(k / this)), so the small cells near "
-                      "the tip carry low degrees (hp); 0 keeps the degree on every cell. Units: "
-                      "levels.");
+                      "Penny and periodic gaps: tip refinement levels per step down in degree. "
+                      "Cells b/2^k wide (b = c, or min(c, lambda/2 - c) for the periodic gap) get "
+                      "degree max(1, degree - floor(k / this)), so the small cells near the tip "
+                      "carry low degrees (hp); 0 keeps the degree on every cell. Units: levels.");
     prm.leave_subsection();
   }
 
@@ -240,10 +240,11 @@ namespace penny
   void LinearSolverParameters::declare(ParameterHandler &prm)
   {
     prm.enter_subsection("Linear solver");
-    prm.declare_entry("Type", "direct", selection(solvers),
-                      "direct: sparse Cholesky (CHOLMOD) on one MPI rank, sparse LU (MUMPS through "
-                      "Trilinos Amesos) on several. cg-amg: conjugate gradients preconditioned with Trilinos' algebraic "
-                      "multigrid, for large meshes.");
+    prm.declare_entry(
+        "Type", "direct", selection(solvers),
+        "direct: sparse Cholesky (CHOLMOD) on one MPI rank, sparse LU (MUMPS through "
+        "Trilinos Amesos) on several. cg-amg: conjugate gradients preconditioned with Trilinos' algebraic "
+        "multigrid, for large meshes.");
     prm.declare_entry("Tolerance", "1e-9", Double(0, 1),
                       "Relative residual |A u - b|/|b| the iterative solver must reach; a direct "
                       "solve that misses it is an error too. Units: none.");

@@ -302,9 +302,10 @@ namespace penny
         require(max_radius * c < room, "J-integral/Ring radii", max_radius,
                 "(0, min(H, R - c)/c = " + dealii::Utilities::to_string(room / c) + ")");
       }
-    if (parameters.finite_element && !parameters.geometry)
+    if (parameters.finite_element && !parameters.geometry && !parameters.periodic_gap)
       require(parameters.finite_element->levels_per_degree == 0, "Finite element/Degree grading",
-              parameters.finite_element->levels_per_degree, "0 (only the penny-gap models grade the degree)");
+              parameters.finite_element->levels_per_degree,
+              "0 (only the penny-gap and periodic-gap models grade the degree)");
     if (parameters.periodic_gap && parameters.depth_study)
       {
         const auto        &radii      = parameters.periodic_gap->ring_radii;

@@ -119,15 +119,17 @@ namespace penny
 
   PeriodicGapModelParameters periodic_gap_model(const Parameters &parameters, const double c)
   {
-    const auto &model = *parameters.periodic_gap;
-    return {model.wavelength,
-            model.depth * model.wavelength,
-            c,
-            model.tip_levels,
-            model.grading_distance,
-            parameters.material.value(),
-            parameters.finite_element.value().degree,
-            parameters.linear_solver.value()};
+    const auto                &model = *parameters.periodic_gap;
+    PeriodicGapModelParameters gap{model.wavelength,
+                                   model.depth * model.wavelength,
+                                   c,
+                                   model.tip_levels,
+                                   model.grading_distance,
+                                   parameters.material.value(),
+                                   parameters.finite_element.value().degree,
+                                   parameters.linear_solver.value()};
+    gap.levels_per_degree = parameters.finite_element.value().levels_per_degree;
+    return gap;
   }
 
   PeriodicGapResults solve_periodic_gap(const PeriodicGapModelParameters &model, const BuecknerTension &load,
