@@ -72,8 +72,9 @@ namespace penny
   // (4e3 to 9e5 DoFs, degrees 1, 2 and 4): about 3 kB per cell on each rank
   // (the triangulation is held whole on every rank), and per matrix entry
   // 110 bytes with a direct solver (measured with UMFPACK's LU: the matrix,
-  // its serial copy and the factors; CHOLMOD's Cholesky factors take less), whose fill grows slowly with the
-  // size) or 50 bytes with CG and AMG. The estimate lies 10-50 % above what was measured.
+  // its serial copy and the factors, whose fill grows slowly with the size;
+  // CHOLMOD's Cholesky factors take less) or 50 bytes with CG and AMG. The
+  // estimate lies 10-50 % above what was measured.
   ProblemSize problem_size(const double cells, const unsigned int degree,
                            const LinearSolverParameters::Type solver, const unsigned int n_ranks)
   {
