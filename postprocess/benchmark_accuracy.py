@@ -39,14 +39,15 @@ MODELS = ["penny-gap", "periodic-gap"]
 # truncation falls like exp(-2 pi D/lambda). Degree grading 0: one degree.
 LADDER = {
     "penny-gap": [(2, 12, 2, 1e3, 0), (3, 16, 2, 1e3, 0), (4, 16, 2, 1e3, 0), (4, 20, 2, 1e3, 0),
-                  (4, 24, 1.5, 1e3, 8), (5, 28, 1.5, 1e3, 8), (5, 30, 2, 1e5, 8), (6, 30, 2, 1e5, 0),
-                  (6, 32, 1.5, 1e5, 8), (6, 36, 1.5, 1e5, 8), (7, 36, 1.5, 1e5, 8), (8, 36, 2, 1e5, 0)],
+                  (4, 24, 1.5, 1e3, 8), (4, 24, 1.75, 1e3, 7), (5, 28, 1.5, 1e3, 8), (5, 30, 1.75, 1e4, 7),
+                  (6, 30, 2, 1e5, 0), (6, 32, 1.5, 1e5, 8), (6, 32, 1.75, 1e4, 8), (6, 32, 1.75, 1e4, 7),
+                  (6, 36, 1.5, 1e5, 8), (7, 36, 1.5, 1e5, 8), (8, 36, 2, 1e5, 0)],
     "periodic-gap": [(2, 12, 2, 3, 0), (3, 16, 2, 3, 0), (4, 16, 3, 3, 0), (4, 20, 3, 3, 0), (4, 24, 3, 3, 0),
                      (4, 20, 2, 3, 8), (5, 24, 2, 3, 8), (5, 28, 1.5, 3, 8), (6, 30, 1.5, 3, 8),
                      (6, 32, 1.5, 3, 8), (7, 32, 1.5, 3, 8)],
 }
 # The mesh of the degree sweeps: (tip levels, grading distance, size).
-DEGREE_MESH = {"penny-gap": (32, 1.5, 1e5), "periodic-gap": (32, 1.5, 3)}
+DEGREE_MESH = {"penny-gap": (32, 1.75, 1e4), "periodic-gap": (32, 1.5, 3)}
 DEGREE_GRADINGS = [0, 8]
 
 
@@ -121,7 +122,8 @@ def plot(runs, path):
         ax.set_ylabel("largest relative K_I error")
         ax.grid(True, which="both", alpha=0.3)
     axes[0].legend(fontsize=7)
-    figure.suptitle("K_I error for degrees 1 to 8 (numbers), tip-graded meshes of 32 levels")
+    figure.suptitle("K_I error for degrees 1 to 8 (numbers), tip-graded meshes of 32 levels "
+                    f"(grading distance {DEGREE_MESH['penny-gap'][1]} and {DEGREE_MESH['periodic-gap'][1]})")
     figure.tight_layout()
     figure.savefig(path, dpi=120)
 
@@ -137,7 +139,7 @@ def main():
     out.mkdir(parents=True, exist_ok=True)
 
     settings = [("ladder", model, *setting) for model in MODELS for setting in LADDER[model]]
-    settings += [("degrees", model, degree, *DEGREE_MESH[model][:2], DEGREE_MESH[model][2], degree_grading)
+    settings += [("degrees", model, degree, *DEGREE_MESH[model], degree_grading)
                  for model in MODELS for degree_grading in DEGREE_GRADINGS for degree in range(1, 9)]
     keys = ["set", "model", "degree", "tip levels", "grading distance", "size", "degree grading"]
     runs = []

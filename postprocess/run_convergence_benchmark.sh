@@ -51,7 +51,7 @@ while read -r name settings; do
   for ranks in 1 2; do
     echo "== $name on $ranks MPI rank(s)"
     largest "$name" $settings | sed "s/RANKS/$ranks/" > output/convergence/largest-$name-$ranks.prm
-    mpirun -np $ranks build/penny output/convergence/largest-$name-$ranks.prm
+    mpirun -np $ranks build/penny output/convergence/largest-$name-$ranks.prm < /dev/null
   done
 done <<LIST
 uniform-h 2 0 0 2 4 direct
