@@ -130,11 +130,15 @@ def plot(runs, path):
 
 def main():
     parser = argparse.ArgumentParser()
-    parser.add_argument("penny")
-    parser.add_argument("--repeat", type=int, default=3)
+    parser.add_argument("penny", help="the penny executable (a Release build)")
+    parser.add_argument("--repeat", type=int, default=3, help="runs per discretisation, the best counts (>= 1)")
     parser.add_argument("--out", default="output/benchmark-accuracy")
     args = parser.parse_args()
     penny = os.path.abspath(args.penny)
+    if not (os.path.isfile(penny) and os.access(penny, os.X_OK)):
+        parser.error(f"{args.penny} is not an executable file")
+    if args.repeat < 1:
+        parser.error(f"--repeat {args.repeat}: at least 1")
     out = pathlib.Path(args.out)
     out.mkdir(parents=True, exist_ok=True)
 

@@ -1,6 +1,8 @@
 #!/usr/bin/python3
 """Compares the CSV tables of two result trees, e.g. the output/ folders of two
-builds that ran the same scenes: every file present in both, column by column.
+builds that ran the same scenes: every table of OLD_DIR with its namesake in
+NEW_DIR, column by column. A missing folder, a table missing from NEW_DIR or
+an OLD_DIR without any table is a failure.
 
 Numbers must agree to RELATIVE (default 1e-12), or to the last digit the less
 precise file printed. Columns that hold errors or differences of nearly equal
@@ -77,11 +79,17 @@ def compare(old_rows, new_rows):
     return worst, problems
 
 
+for root in (old_root, new_root):
+    if not root.is_dir():
+        sys.exit(f"compare_results.py: {root} is not a folder")
 failed = False
 old_tables = sorted(path.relative_to(old_root) for path in old_root.rglob("*.csv"))
+if not old_tables:
+    sys.exit(f"compare_results.py: {old_root} holds no CSV table")
 for relative in old_tables:
     if not (new_root / relative).exists():
         print(f"{relative}: only in {old_root}")
+        failed = True
         continue
     worst, problems = compare(rows_of(old_root / relative), rows_of(new_root / relative))
     print(f"{relative}: largest deviation {worst:.1e}" + (f", {len(problems)} mismatches" if problems else ""))

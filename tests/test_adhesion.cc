@@ -43,7 +43,7 @@ BOOST_AUTO_TEST_CASE(closed_form_constants)
       P.push_back(closed_form::adhesive_tension(c, R_p, K_Ic));
     return P;
   };
-  const double c_min = fe_stationary_point(tensions, 0.25 * scale, 4 * scale, Extremum::minimum, "test");
+  const double c_min = fe_stationary_point(tensions, 0.25 * scale, 4 * scale, Extremum::minimum, "test", "");
   BOOST_TEST(c_min / scale == closed_form::c_min_factor, tt::tolerance(1e-8));
   BOOST_TEST(closed_form::adhesive_tension(c_min, R_p, K_Ic) / adhesion_tension(R_p, K_Ic) ==
                  closed_form::psi,
@@ -60,13 +60,15 @@ BOOST_AUTO_TEST_CASE(closed_form_constants)
       f.push_back(std::sin(xi));
     return f;
   };
-  BOOST_TEST(fe_stationary_point(sines, 1, 2, Extremum::maximum, "test") == M_PI / 2, tt::tolerance(1e-8));
-  BOOST_CHECK_EXCEPTION(fe_stationary_point(sines, 0.5, 1.5, Extremum::maximum, "sine"), std::runtime_error,
-                        [](const std::runtime_error &error) {
-                          return std::string(error.what()) ==
-                                 "sine: the maximum lies at an end of the search interval";
-                        });
-  BOOST_CHECK_THROW(fe_stationary_point(sines, 1, 2, Extremum::minimum, "sine"), std::runtime_error);
+  BOOST_TEST(fe_stationary_point(sines, 1, 2, Extremum::maximum, "test", "") == M_PI / 2,
+             tt::tolerance(1e-8));
+  BOOST_CHECK_EXCEPTION(
+      fe_stationary_point(sines, 0.5, 1.5, Extremum::maximum, "sine", "widen it"), std::runtime_error,
+      [](const std::runtime_error &error) {
+        return std::string(error.what()) ==
+               "sine: the maximum lies at an end of the search interval [0.5, 1.5]; widen it";
+      });
+  BOOST_CHECK_THROW(fe_stationary_point(sines, 1, 2, Extremum::minimum, "sine", ""), std::runtime_error);
 
   const double c_t = *closed_form::stable_gap_radius(2e6, R_p, K_Ic);
   BOOST_TEST(closed_form::adhesive_tension(c_t, R_p, K_Ic) == 2e6, tt::tolerance(1e-12));

@@ -152,7 +152,7 @@ BOOST_AUTO_TEST_CASE(sinusoid_scenes)
       "line 2: subsection 'Gap and load' is not read by Scene = johnson-curves"));
   BOOST_TEST(mentions(
       error_of("set Scene = periodic-gap-depth\nsubsection Depth study\n set Depths = 1, 0.125\nend\n"),
-      "Depth study/Depths = 0.125 is outside the allowed range (largest ring radius/4 = 0.1875, inf)"));
+      "Depth study/Depths = 0.125 is outside the allowed range (largest ring radius/4 = 0.1875, 100] lambda"));
   BOOST_TEST(
       mentions(error_of("set Scene = periodic-gap\nsubsection Gap and load\n set Peak tension p* = 0\nend\n"),
                "Gap and load/Peak tension p* = 0 is outside the allowed range [1e-30, 1e30] Pa"));

@@ -1,6 +1,7 @@
 #include "fe/problem_size.h"
 
 #include "input/input_error.h"
+#include "parallel/spread_over_ranks.h"
 
 #include <deal.II/base/mpi.h>
 #include <deal.II/base/utilities.h>
@@ -121,8 +122,10 @@ namespace penny
 
   void check_problem_size(const ProblemSize &size, const std::string &entries, const MPI_Comm communicator)
   {
-    const double budget =
-        dealii::Utilities::MPI::broadcast(communicator, memory_share * available_memory(), 0);
+    // Every rank of the run on this machine builds its model at the same time.
+    const unsigned int sharing = ranks_on_this_machine();
+    const double       budget =
+        dealii::Utilities::MPI::broadcast(communicator, memory_share * available_memory() / sharing, 0);
     if (size.bytes <= budget)
       return;
     const auto gib = [](const double bytes) {
@@ -135,7 +138,8 @@ namespace penny
     message.precision(2);
     message << entries << ": about " << size.cells << " cells, " << size.dofs << " degrees of freedom and "
             << gib(size.bytes) << "; this run may use " << gib(budget) << " (" << memory_share * 100
-            << " % of the memory available)";
+            << " % of the memory available"
+            << (sharing > 1 ? ", shared by " + std::to_string(sharing) + " ranks" : "") << ")";
     throw InputError(message.str());
   }
 } // namespace penny

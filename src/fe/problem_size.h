@@ -39,7 +39,9 @@ namespace penny
   // The share of the available memory a model may take.
   constexpr double memory_share = 0.75;
 
-  // Throws InputError, naming `entries`, if `size` needs more than
-  // memory_share of the available memory. Collective: rank 0 decides.
+  // Throws InputError, naming `entries`, if `size` (per rank) needs more than
+  // memory_share of the available memory over the ranks of the run on this
+  // machine, which build their models at the same time. Collective on
+  // `communicator`: its rank 0 decides.
   void check_problem_size(const ProblemSize &size, const std::string &entries, MPI_Comm communicator);
 } // namespace penny

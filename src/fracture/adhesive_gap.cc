@@ -20,7 +20,7 @@ namespace penny
     if (P == p0)
       return c_min;
     const auto f = [&](const double c) { return P - adhesive_tension(c, R_p, K_Ic); };
-    return root_above(f, c_min, f(c_min), closed_form_root_bits);
+    return root_above(f, c_min, f(c_min), "closed-form stable gap radius", closed_form_root_bits);
   }
 
   double adhesion_length(const double R_p, const double K_Ic)

@@ -2,6 +2,7 @@
 
 #include "fracture/adhesive_gap.h"
 #include "fracture/root_finding.h"
+#include "input/input_error.h"
 
 #include <stdexcept>
 
@@ -30,7 +31,7 @@ namespace penny
           throw std::runtime_error("gap size: K_I(c) is not positive for any c down to 2^-20 a");
         lo /= 2;
       }
-    return root_above(K_I, lo, K_lo);
+    return root_above(K_I, lo, K_lo, "gap size");
   }
 
   AdhesiveMinimum fe_adhesive_minimum(GapFamily &gaps, const double R_p, const double K_Ic,
@@ -44,8 +45,9 @@ namespace penny
       return P;
     };
     const double scale = adhesion_length(R_p, K_Ic);
-    const double c_min =
-        fe_stationary_point(tensions, 0.25 * scale, 4 * scale, Extremum::minimum, "adhesive minimum");
+    const double c_min = fe_stationary_point(
+        tensions, 0.25 * scale, 4 * scale, Extremum::minimum, "adhesive minimum of P(c), c in m",
+        "the FE models are too coarse (Mesh/Tip refinement levels, Finite element/Polynomial degree)");
     const UnitLoadSifs K = sifs_at(gaps, c_min, ranks);
     return {c_min, tension(K), K.uniform};
   }
@@ -63,6 +65,7 @@ namespace penny
       return P * K.uniform - K.quadratic / (2 * R_p) - K_Ic;
     };
     // At the minimum's gap the excess is (P - p0) K_uniform, positive: no solve needed.
-    return root_above(excess, minimum.gap_radius, (P - minimum.tension) * minimum.uniform_sif);
+    return root_above(excess, minimum.gap_radius, (P - minimum.tension) * minimum.uniform_sif,
+                      "stable gap radius at the peak tension P = " + shortest(P) + " Pa");
   }
 } // namespace penny

@@ -1,6 +1,7 @@
 #include "fracture/periodic_searches.h"
 
 #include "fracture/root_finding.h"
+#include "input/input_error.h"
 
 #include <cmath>
 #include <stdexcept>
@@ -23,7 +24,11 @@ namespace penny
           values.push_back(f(K));
         return values;
       };
-      const double c = fe_stationary_point(values, lo, hi, Extremum::maximum, what);
+      const double c =
+          fe_stationary_point(values, lo, hi, Extremum::maximum, what,
+                              "the FE models are too coarse or too shallow (Periodic gap/Tip "
+                              "refinement levels, Periodic gap/Depth D, Finite element/Polynomial "
+                              "degree)");
       return {c, values({c})[0]};
     }
   } // namespace
@@ -73,7 +78,8 @@ namespace penny
     const double adhesion = lambda * std::pow(alpha, 0.4);
     const auto [c, load]  = interior_maximum(
          gaps, [&](const SinusoidUnitSifs &K) { return fe_johnson_load(K, lambda, alpha); }, adhesion / 16,
-         std::min(adhesion / 2, lambda / 4), ranks, "jump into contact");
+         std::min(adhesion / 2, lambda / 4), ranks,
+         "jump into contact at alpha = " + shortest(alpha) + ", maximum over the gap half-width c in m");
     return {lambda / 2 - c, load};
   }
 
@@ -82,7 +88,7 @@ namespace penny
     const double lambda   = gaps.wavelength();
     const auto [c, alpha] = interior_maximum(
         gaps, [&](const SinusoidUnitSifs &K) { return K.cosine / std::sqrt(lambda); }, lambda / 16,
-        7 * lambda / 16, ranks, "critical alpha");
+        7 * lambda / 16, ranks, "critical alpha, maximum over the gap half-width c in m");
     return {lambda / 2 - c, alpha};
   }
 } // namespace penny

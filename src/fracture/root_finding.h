@@ -6,6 +6,7 @@
 #include <boost/math/tools/roots.hpp>
 
 #include <cstdint>
+#include <sstream>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -30,16 +31,17 @@ namespace penny
   }
 
   // The first root above lo, where f(lo) > 0: the bracket widens geometrically
-  // until f changes sign.
-  template <typename F> double root_above(F &&f, double lo, double f_lo, const int bits = fe_root_bits)
+  // until f changes sign. `what` names the root in errors.
+  template <typename F>
+  double root_above(F &&f, double lo, double f_lo, const std::string &what, const int bits = fe_root_bits)
   {
     if (!(f_lo > 0))
-      throw std::runtime_error("root finder: the lower bracket end has no positive value");
+      throw std::runtime_error(what + ": the search starts where the function is not positive");
     double hi = 2 * lo, f_hi = f(hi);
     for (unsigned int k = 0; f_hi > 0; ++k, f_hi = f(hi))
       {
         if (k == 20)
-          throw std::runtime_error("root finder: no sign change up to 2^20 times the start");
+          throw std::runtime_error(what + ": no root up to 2^21 times where the search started");
         lo   = hi;
         f_lo = f_hi;
         hi *= 2;
@@ -62,10 +64,10 @@ namespace penny
   // itself places x only to the square root of the rounding noise of f
   // (1e-6 for noise 1e-12); the root of the quotient places it to about
   // noise/h + h^2 |f'''/(6 f'')| x, 1e-8 here. `what` names the search in
-  // its errors.
+  // its errors; `remedy` says what to change when the extremum is not inside.
   template <typename Values>
   double fe_stationary_point(Values &&values, const double lo, const double hi, const Extremum kind,
-                             const std::string &what)
+                             const std::string &what, const std::string &remedy)
   {
     constexpr double h         = 1e-4;
     constexpr int    bits      = 26;
@@ -82,8 +84,13 @@ namespace penny
     };
     const std::vector<double> ends = quotients({lo, hi});
     if (!(ends[0] < 0 && ends[1] > 0))
-      throw std::runtime_error(what + ": the " + (kind == Extremum::minimum ? "minimum" : "maximum") +
-                               " lies at an end of the search interval");
+      {
+        std::ostringstream message;
+        message.precision(3);
+        message << what << ": the " << (kind == Extremum::minimum ? "minimum" : "maximum")
+                << " lies at an end of the search interval [" << lo << ", " << hi << "]; " << remedy;
+        throw std::runtime_error(message.str());
+      }
     return bracketed_root([&](const double x) { return quotients({x})[0]; }, lo, hi, ends[0], ends[1], bits);
   }
 } // namespace penny

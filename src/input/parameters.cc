@@ -314,7 +314,7 @@ namespace penny
         smallest << max_radius / 4;
         for (const double depth : parameters.depth_study->depths)
           require(max_radius < 4 * depth, "Depth study/Depths", depth,
-                  "(largest ring radius/4 = " + smallest.str() + ", inf)");
+                  "(largest ring radius/4 = " + smallest.str() + ", 100] lambda");
       }
     if (parameters.mesh)
       {

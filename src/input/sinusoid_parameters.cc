@@ -174,7 +174,7 @@ namespace penny
     require(smallest_alpha >= 1e-8, "Jump into contact/Smallest alpha", smallest_alpha,
             "[1e-8, Largest alpha)");
     require(largest_alpha > smallest_alpha && largest_alpha <= 0.56, "Jump into contact/Largest alpha",
-            largest_alpha, "(Smallest alpha, 0.56]");
+            largest_alpha, "(Smallest alpha = " + shortest(smallest_alpha) + ", 0.56]");
   }
 
   double JumpIntoContactParameters::alpha(const unsigned int i) const

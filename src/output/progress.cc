@@ -1,11 +1,15 @@
 #include "output/progress.h"
 
+#include <deal.II/base/mpi.h>
+
 #include <iomanip>
 
 namespace penny
 {
   Progress::Progress(std::ostream &log, std::string unit, const double interval)
-      : log(log), unit(std::move(unit)), interval(interval), last_line(start)
+      : log(log),
+        unit(dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) > 1 ? unit + " by rank 0" : unit),
+        interval(interval), last_line(start)
   {
   }
 

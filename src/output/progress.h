@@ -1,6 +1,7 @@
 // Progress of a long scene on the terminal: after each step (an FE solve, a
 // case, a cycle) a line, at most one per `interval` seconds, with the elapsed
-// time, the steps done and what the scene is at.
+// time, the steps done and what the scene is at. Rank 0 prints: under MPI
+// the steps counted are its own, and the line says so.
 #pragma once
 
 #include <chrono>

@@ -1,5 +1,7 @@
 #include "parallel/spread_over_ranks.h"
 
+#include <cstdlib>
+
 namespace penny
 {
   // Each rank packs its rows as (index, length, values...) into one buffer;
@@ -62,5 +64,14 @@ namespace penny
         position += 2 + row_length;
       }
     return rows;
+  }
+
+  unsigned int ranks_on_this_machine()
+  {
+    for (const char *name : {"OMPI_COMM_WORLD_LOCAL_SIZE", "MPI_LOCALNRANKS"})
+      if (const char *value = std::getenv(name))
+        if (const long ranks = std::strtol(value, nullptr, 10); ranks > 0)
+          return ranks;
+    return 1;
   }
 } // namespace penny

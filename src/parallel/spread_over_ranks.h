@@ -21,4 +21,10 @@ namespace penny
   std::vector<std::vector<double>>
   spread_over_ranks(MPI_Comm communicator, unsigned int n,
                     const std::function<std::vector<double>(unsigned int)> &piece);
+
+  // The ranks of this run on this machine, which share its memory while they
+  // build their pieces at once: as the launcher tells each rank (Open MPI's
+  // OMPI_COMM_WORLD_LOCAL_SIZE, MPICH's MPI_LOCALNRANKS), 1 without one. No
+  // communication, so a piece on one rank alone may ask.
+  unsigned int ranks_on_this_machine();
 } // namespace penny

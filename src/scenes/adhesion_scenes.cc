@@ -2,6 +2,7 @@
 
 #include "fracture/adhesive_gap.h"
 #include "fracture/gap_searches.h"
+#include "input/input_error.h"
 #include "output/table.h"
 #include "scenes/scene_support.h"
 
@@ -124,10 +125,19 @@ namespace penny
   std::optional<double> run_adhesive_equilibrium_scene(const Parameters   &parameters,
                                                        const ResultFolder &results, std::ostream &log)
   {
-    GapSearch             search(parameters, log);
-    const double          P       = parameters.load->peak_tension;
-    const double          R_p     = search.summit_radius;
-    const double          K_Ic    = search.critical_stress_intensity;
+    GapSearch    search(parameters, log);
+    const double P    = parameters.load->peak_tension;
+    const double R_p  = search.summit_radius;
+    const double K_Ic = search.critical_stress_intensity;
+    // The stable gap's search widens its bracket from c_min to at most 2^21
+    // c_min: a tension whose gap lies beyond is refused before any solve.
+    const double largest = closed_form::adhesive_tension(
+        std::pow(2., 20) * closed_form::c_min_factor * adhesion_length(R_p, K_Ic), R_p, K_Ic);
+    const double shown = std::pow(10., std::floor(std::log10(largest)) - 2); // three digits, rounded down
+    require(P <= largest, "Load/Peak tension P", P,
+            "[-1e30, " + shortest(std::floor(largest / shown) * shown) +
+                "] Pa for this Summit radius R_p and Critical stress intensity K_Ic (the stable gap "
+                "radius would exceed 2^20 c_min)");
     const AdhesiveMinimum minimum = fe_adhesive_minimum(search.gaps, R_p, K_Ic, MPI_COMM_WORLD);
     const auto            c_t     = fe_stable_gap_radius(search.gaps, P, R_p, K_Ic, minimum, MPI_COMM_WORLD);
 

@@ -1,5 +1,6 @@
 #include "scenes/convergence_scene.h"
 
+#include "input/input_error.h"
 #include "output/progress.h"
 #include "parallel/spread_over_ranks.h"
 #include "scenes/penny_gap_scene.h"
@@ -70,11 +71,11 @@ namespace penny
     }
   } // namespace
 
-  // The cycles are independent except in the adaptive sequence, whose cycle
-  // k refines the mesh of cycle k - 1: they are spread over the ranks, each
-  // model on one rank, so each wall time is that of one core (the other
-  // ranks' cycles run beside it on the other cores). The adaptive cycles run
-  // in turn, each model shared by all ranks.
+  // Every model lives on one rank, so each wall time is that of one core
+  // (other ranks' cycles run beside it on the other cores) and the table is
+  // the same on any number of ranks. The cycles are spread over the ranks,
+  // except in the adaptive sequence, whose cycle k refines the mesh of cycle
+  // k - 1: it is one piece of work, its cycles in turn on one rank.
   std::vector<ConvergenceRow> run_convergence_scene(const Parameters &parameters, const ResultFolder &results,
                                                     std::ostream &log)
   {
@@ -96,17 +97,16 @@ namespace penny
     columns.push_back({"solver"});
     Table table(columns);
 
-    const bool     adaptive    = sequence.strategy == Strategy::adaptive;
-    const MPI_Comm ranks       = adaptive ? MPI_COMM_WORLD : MPI_COMM_SELF; // of each model
-    auto           base        = penny_gap_model(parameters);
-    base.communicator          = ranks;
-    const LoadParameters &load = *parameters.load;
+    const bool            adaptive = sequence.strategy == Strategy::adaptive;
+    auto                  base     = penny_gap_model(parameters);
+    const LoadParameters &load     = *parameters.load;
+    base.communicator              = MPI_COMM_SELF;
 
     // One timer for the cycles of a rank; a cycle's phases are the
     // differences of its totals, so an adaptive refinement counts towards the
     // cycle it builds. A cycle's row: cells, DoFs, the setting, K_I per
     // ring, the largest relative error, the time of each phase, the wall
-    // time and the peak memory (MiB, of the largest rank).
+    // time and the peak memory of the rank (MiB).
     TimerOutput                    timer(log, TimerOutput::never, TimerOutput::wall_times);
     std::unique_ptr<PennyGapModel> adaptive_model;
     Progress                       progress(log, "cycles done");
@@ -114,17 +114,25 @@ namespace penny
       auto before                 = timer.get_summary_data(TimerOutput::total_wall_time);
       const auto [model, setting] = cycle_model(base, sequence, k);
       PennySceneResults solved;
-      if (adaptive)
+      try
         {
-          const FaceLoad face_load(load, model.geometry.gap_radius);
-          if (k == 0)
-            adaptive_model = std::make_unique<PennyGapModel>(model, timer);
+          if (adaptive)
+            {
+              const FaceLoad face_load(load, model.geometry.gap_radius);
+              if (k == 0)
+                adaptive_model = std::make_unique<PennyGapModel>(model, timer);
+              else
+                adaptive_model->refine_by_kelly(adaptive_model->solve(face_load), sequence.refined_fraction);
+              solved = measure_penny_gap(*adaptive_model, face_load, radii, timer);
+            }
           else
-            adaptive_model->refine_by_kelly(adaptive_model->solve(face_load), sequence.refined_fraction);
-          solved = measure_penny_gap(*adaptive_model, face_load, radii, timer);
+            solved = solve_penny_gap(model, load, radii, timer);
         }
-      else
-        solved = solve_penny_gap(model, load, radii, timer);
+      catch (const InputError &error) // a model too large, say: which cycle
+        {
+          throw InputError("Convergence: cycle " + std::to_string(k) + " (cycles 0 to " +
+                                               std::to_string(sequence.cycles - 1) + "): " + error.what());
+        }
 
       std::vector<double> row = {double(solved.n_cells), double(solved.n_dofs), setting};
       double              error = 0;
@@ -146,7 +154,7 @@ namespace penny
       row.push_back(wall);
       Utilities::System::MemoryStats memory;
       Utilities::System::get_memory_stats(memory);
-      row.push_back(Utilities::MPI::max(memory.VmHWM / 1024., ranks));
+      row.push_back(memory.VmHWM / 1024.);
       std::ostringstream state;
       state << setting_name(sequence.strategy) << ' ' << setting << ": DoFs " << solved.n_dofs << ", error "
             << std::scientific << std::setprecision(3) << error;
@@ -155,12 +163,22 @@ namespace penny
     };
     std::vector<std::vector<double>> measured;
     if (adaptive)
-      for (unsigned int k = 0; k < sequence.cycles; ++k)
-        measured.push_back(cycle(k));
+      {
+        const std::vector<double> rows       = spread_over_ranks(MPI_COMM_WORLD, 1, [&](unsigned int) {
+          std::vector<double> all;
+          for (unsigned int k = 0; k < sequence.cycles; ++k)
+            for (const double value : cycle(k))
+              all.push_back(value);
+          return all;
+        })[0];
+        const std::size_t         row_length = rows.size() / sequence.cycles;
+        for (auto row = rows.begin(); row != rows.end(); row += row_length)
+          measured.emplace_back(row, row + row_length);
+      }
     else
       measured = spread_over_ranks(MPI_COMM_WORLD, sequence.cycles, cycle);
 
-    const std::string           solver = solver_name(parameters.linear_solver.value(), ranks);
+    const std::string           solver = solver_name(parameters.linear_solver.value(), MPI_COMM_SELF);
     std::vector<ConvergenceRow> rows;
     for (unsigned int k = 0; k < sequence.cycles; ++k)
       {
