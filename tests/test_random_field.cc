@@ -6,6 +6,7 @@
 #define BOOST_TEST_MODULE random_field
 #define BOOST_TEST_NO_MAIN
 #include "parallel/spread_over_ranks.h"
+#include "contact/half_space.h"
 #include "statistics/random_field.h"
 #include "statistics/roughness.h"
 

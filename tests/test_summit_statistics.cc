@@ -4,6 +4,7 @@
 // sampled Gaussian fields against their expectation.
 #define BOOST_TEST_MODULE summit_statistics
 #define BOOST_TEST_NO_MAIN
+#include "contact/half_space.h"
 #include "statistics/random_field.h"
 #include "statistics/roughness.h"
 #include "statistics/summit_statistics.h"

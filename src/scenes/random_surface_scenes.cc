@@ -5,7 +5,7 @@
 #include "output/table.h"
 #include "parallel/spread_over_ranks.h"
 #include "statistics/contact_area.h"
-#include "statistics/contact_solver.h"
+#include "contact/half_space_contact.h"
 #include "statistics/random_field.h"
 #include "statistics/roughness.h"
 #include "statistics/summit_statistics.h"

@@ -1,4 +1,4 @@
-#include "statistics/contact_solver.h"
+#include "contact/half_space_contact.h"
 
 #include <Eigen/Dense>
 

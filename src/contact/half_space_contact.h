@@ -9,7 +9,7 @@
 // Polonsky and Keer's (1999) constrained conjugate gradients.
 #pragma once
 
-#include "statistics/random_field.h"
+#include "contact/half_space.h"
 
 #include <vector>
 

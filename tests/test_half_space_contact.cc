@@ -1,10 +1,10 @@
 // The FFT boundary-element contact solver: Westergaard's sinusoid (contact
 // half-width and pressure), complementarity on a random surface, full
 // contact, warm-started load sweeps, and errors as exceptions.
-#define BOOST_TEST_MODULE contact_solver
+#define BOOST_TEST_MODULE half_space_contact
 #define BOOST_TEST_NO_MAIN
 #include "fracture/periodic_array.h"
-#include "statistics/contact_solver.h"
+#include "contact/half_space_contact.h"
 #include "statistics/roughness.h"
 
 #include <boost/test/unit_test.hpp>

@@ -1,0 +1,116 @@
+#include "fourier/fourier_transform.h"
+
+#include <fftw3.h>
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+namespace penny
+{
+  PeriodicGrid square_grid(const unsigned int n, const double length)
+  {
+    return {n, n, length, length};
+  }
+
+  double Wavevector::norm() const
+  {
+    return std::hypot(qx, qy);
+  }
+
+  FourierTransform::FourierTransform(const PeriodicGrid &grid) : grid_(grid)
+  {
+    if (grid.nx == 0 || grid.ny == 0 || !(grid.lx > 0) || !(grid.ly > 0))
+      throw std::invalid_argument("FourierTransform: the grid needs nx, ny >= 1 points and lx, ly > 0");
+    real_buffer    = fftw_alloc_real(grid.n_points());
+    complex_buffer = reinterpret_cast<std::complex<double> *>(fftw_alloc_complex(n_coefficients()));
+    // FFTW_ESTIMATE picks the plan without timing runs: the same algorithm, so
+    // the same rounding, on every rank and in every run.
+    auto *spectrum = reinterpret_cast<fftw_complex *>(complex_buffer);
+    forward_plan   = fftw_plan_dft_r2c_2d(grid.nx, grid.ny, real_buffer, spectrum, FFTW_ESTIMATE);
+    inverse_plan   = fftw_plan_dft_c2r_2d(grid.nx, grid.ny, spectrum, real_buffer, FFTW_ESTIMATE);
+  }
+
+  FourierTransform::~FourierTransform()
+  {
+    fftw_destroy_plan(static_cast<fftw_plan>(forward_plan));
+    fftw_destroy_plan(static_cast<fftw_plan>(inverse_plan));
+    fftw_free(real_buffer);
+    fftw_free(complex_buffer);
+  }
+
+  Wavevector FourierTransform::wavevector(const std::size_t coefficient) const
+  {
+    const unsigned int n_y = grid_.ny / 2 + 1;
+    const unsigned int i = coefficient / n_y, j = coefficient % n_y;
+    const int          kx = i <= grid_.nx / 2 ? int(i) : int(i) - int(grid_.nx);
+    const int          ky = j;
+    return {kx,
+            ky,
+            2 * M_PI * kx / grid_.lx,
+            2 * M_PI * ky / grid_.ly,
+            grid_.nx % 2 == 0 && i == grid_.nx / 2,
+            grid_.ny % 2 == 0 && j == grid_.ny / 2};
+  }
+
+  FourierTransform::Spectrum FourierTransform::forward(const GridField &field) const
+  {
+    std::copy(field.begin(), field.end(), real_buffer);
+    fftw_execute(static_cast<fftw_plan>(forward_plan));
+    const double scale = 1. / grid_.n_points();
+    Spectrum     coefficients(complex_buffer, complex_buffer + n_coefficients());
+    for (auto &c : coefficients)
+      c *= scale;
+    return coefficients;
+  }
+
+  GridField FourierTransform::inverse(const Spectrum &coefficients) const
+  {
+    std::copy(coefficients.begin(), coefficients.end(), complex_buffer);
+    fftw_execute(static_cast<fftw_plan>(inverse_plan));
+    return GridField(real_buffer, real_buffer + grid_.n_points());
+  }
+
+  FourierTransform::Spectrum
+  FourierTransform::tabulate(const std::function<std::complex<double>(const Wavevector &)> &multiplier) const
+  {
+    Spectrum table(n_coefficients());
+    for (std::size_t c = 0; c < table.size(); ++c)
+      table[c] = multiplier(wavevector(c));
+    return table;
+  }
+
+  void FourierTransform::apply(const Spectrum &multiplier, const GridField &in, GridField &out) const
+  {
+    std::copy(in.begin(), in.end(), real_buffer);
+    fftw_execute(static_cast<fftw_plan>(forward_plan));
+    const double scale = 1. / grid_.n_points();
+    for (std::size_t c = 0; c < multiplier.size(); ++c)
+      complex_buffer[c] *= scale * multiplier[c];
+    fftw_execute(static_cast<fftw_plan>(inverse_plan));
+    out.assign(real_buffer, real_buffer + grid_.n_points());
+  }
+
+  std::complex<double> derivative_factor(const Wavevector &q, const unsigned int order_x,
+                                         const unsigned int order_y)
+  {
+    if ((q.nyquist_x && order_x % 2 == 1) || (q.nyquist_y && order_y % 2 == 1))
+      return 0;
+    std::complex<double> factor = 1;
+    for (unsigned int n = 0; n < order_x; ++n)
+      factor *= std::complex<double>(0, q.qx);
+    for (unsigned int n = 0; n < order_y; ++n)
+      factor *= std::complex<double>(0, q.qy);
+    return factor;
+  }
+
+  GridField spectral_derivative(const FourierTransform &transform, const GridField &field,
+                                const unsigned int order_x, const unsigned int order_y)
+  {
+    const auto multiplier =
+        transform.tabulate([=](const Wavevector &q) { return derivative_factor(q, order_x, order_y); });
+    GridField derivative;
+    transform.apply(multiplier, field, derivative);
+    return derivative;
+  }
+} // namespace penny
