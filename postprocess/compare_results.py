@@ -24,7 +24,7 @@ bound = float(sys.argv[3]) if len(sys.argv) > 3 else 1e-12
 
 
 def skipped(column):
-    return "(s)" in column or "MiB" in column or column.startswith("wall") or column == "rate"
+    return "(s)" in column or "MiB" in column or "(MB)" in column or column.startswith("wall") or column == "rate"
 
 
 def last_digit(text):

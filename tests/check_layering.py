@@ -1,38 +1,65 @@
-"""Checks that the layers of src/ include each other in one direction only
-(README, "Layout"), and that the statistical layer includes no FE code: no
-deal.II header beyond deal.II/base and none of src/fe.  Usage: check_layering.py SRC"""
+"""Checks the layers of src/ (doc/architecture.md): each folder includes only
+the folders listed for it below, with no exception for single files; the layers
+without finite elements include no deal.II header beyond deal.II/base; and
+no layer below problems/ names an entry of the parameter file (a subsection
+of one, "Mesh/...", inside a string), since errors that name an entry are
+raised where it is read.  Usage: check_layering.py SRC"""
 import pathlib
 import re
 import sys
 
 src = pathlib.Path(sys.argv[1])
-# What each layer may include besides itself.
+# What each layer may include besides itself, from the bottom up.
+below_fe = ["numerics", "input", "parallel", "closed_forms"]
+fe_layers = below_fe + ["fe", "fracture", "searches"]
+spectral = ["fourier", "contact", "statistics"]
 allowed = {
+    "numerics": [],
     "input": [],
-    "parallel": ["input/input_error.h"],
-    "fe": ["input", "parallel"],
-    "fracture": ["input", "parallel", "fe"],
+    "parallel": ["input"],
+    "closed_forms": ["numerics", "input"],
+    "fe": below_fe,
+    "fracture": below_fe + ["fe"],
+    "searches": below_fe + ["fe", "fracture"],
     "fourier": [],
-    "contact": ["fourier"],
-    "statistics": ["input/input_error.h", "parallel", "fourier", "fracture/adhesive_gap.h"],
-    "output": ["input", "parallel", "fe", "fracture"],
-    "scenes": ["input", "parallel", "fe", "fracture", "fourier", "contact", "statistics", "output"],
+    "contact": ["numerics", "input", "parallel", "fourier"],
+    "statistics": below_fe + ["fourier", "contact"],
+    "output": fe_layers,
+    "problems": fe_layers + spectral + ["output"],
+    "scenes": fe_layers + spectral + ["output", "problems"],
     "apps": ["input", "scenes"],
 }
-fe_free = {"input", "parallel", "fourier", "contact", "statistics"}  # no deal.II beyond deal.II/base
+fe_free = set(below_fe + spectral)  # no deal.II beyond deal.II/base
+reads_entries = {"problems", "scenes", "apps"}
+
+files = sorted(path for path in src.rglob("*.[ch]*") if path.is_file())
+subsections = set()
+for path in files:
+    if path.relative_to(src).parts[0] in reads_entries:
+        subsections |= set(re.findall(r'subsection\("([^"]+)"', path.read_text()))
+
 problems = []
-for path in sorted(src.rglob("*.[ch]*")):
+for path in files:
     layer = path.relative_to(src).parts[0]
-    for line in path.read_text().splitlines():
+    if layer not in allowed:
+        problems.append(f"{path.relative_to(src)} is in no known layer")
+        continue
+    text = path.read_text()
+    for line in text.splitlines():
         own = re.match(r'#include "([^"]+)"', line)
         if own:
             target = own.group(1)
-            if not (target.startswith(layer + "/") or any(target == a or target.startswith(a + "/") for a in allowed[layer])):
+            if not any(target.startswith(folder + "/") for folder in [layer] + allowed[layer]):
                 problems.append(f"{path.relative_to(src)} includes {target}")
         library = re.match(r"#include <deal.II/(\w+)/", line)
         if library and layer in fe_free and library.group(1) != "base":
             problems.append(f"{path.relative_to(src)} includes deal.II/{library.group(1)}")
+    if layer not in reads_entries:
+        for literal in re.findall(r'"((?:[^"\\]|\\.)*)"', text):
+            for name in subsections:
+                if name + "/" in literal:
+                    problems.append(f"{path.relative_to(src)} names the entry '{literal}'")
 for problem in problems:
     print("FAIL:", problem)
-print(f"checked {len(list(src.rglob('*.[ch]*')))} files: {len(problems)} problems")
+print(f"checked {len(files)} files against {len(subsections)} subsections: {len(problems)} problems")
 sys.exit(1 if problems else 0)

@@ -3,9 +3,9 @@
 // stable-branch equilibrium radius, plus the closed forms they are checked by.
 #define BOOST_TEST_MODULE adhesion
 #define BOOST_TEST_NO_MAIN
-#include "fracture/adhesive_gap.h"
-#include "fracture/gap_searches.h"
-#include "fracture/root_finding.h"
+#include "closed_forms/adhesive_gap.h"
+#include "numerics/root_finding.h"
+#include "searches/gap_searches.h"
 #include "test_support.h"
 
 #include <boost/test/unit_test.hpp>
@@ -21,9 +21,9 @@ using namespace penny;
 namespace
 {
   // Test size: 16 tip levels; the searches use the ring of radius 0.75 c.
-  GapFamily test_size(dealii::TimerOutput &timer, const unsigned int degree = 3)
+  PennyGapFamily test_size(dealii::TimerOutput &timer, const unsigned int degree = 3)
   {
-    return GapFamily(test_size_model(16, degree), 0.75, timer);
+    return PennyGapFamily({test_size_model(16, degree), 0.75}, timer);
   }
 
   const double R_p  = 7.8125e-7;
@@ -80,7 +80,7 @@ BOOST_AUTO_TEST_CASE(closed_form_constants)
 BOOST_AUTO_TEST_CASE(adhesionless_root)
 {
   dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
-  GapFamily           gaps = test_size(timer);
+  PennyGapFamily      gaps = test_size(timer);
   const double        a    = 0.6;
   BOOST_TEST(fe_adhesionless_gap_radius(gaps, 1e6, a, MPI_COMM_WORLD) / a ==
                  closed_form::adhesionless_c_over_a,
@@ -90,7 +90,7 @@ BOOST_AUTO_TEST_CASE(adhesionless_root)
 BOOST_AUTO_TEST_CASE(adhesive_minimum_and_equilibrium)
 {
   dealii::TimerOutput   timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
-  GapFamily             gaps    = test_size(timer);
+  PennyGapFamily        gaps    = test_size(timer);
   const AdhesiveMinimum minimum = fe_adhesive_minimum(gaps, R_p, K_Ic, MPI_COMM_WORLD);
   BOOST_TEST(minimum.tension / adhesion_tension(R_p, K_Ic) == closed_form::psi, tt::tolerance(1e-4));
   BOOST_TEST(minimum.gap_radius / adhesion_length(R_p, K_Ic) == closed_form::c_min_factor,
@@ -113,7 +113,7 @@ BOOST_AUTO_TEST_CASE(adhesive_minimum_and_equilibrium)
 BOOST_AUTO_TEST_CASE(psi_independent_of_scales)
 {
   dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
-  GapFamily           gaps = test_size(timer, 2);
+  PennyGapFamily      gaps = test_size(timer, 2);
   const auto          psi  = [&](const double r_p, const double k_ic) {
     return fe_adhesive_minimum(gaps, r_p, k_ic, MPI_COMM_WORLD).tension / adhesion_tension(r_p, k_ic);
   };

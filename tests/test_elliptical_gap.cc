@@ -1,16 +1,17 @@
 // The 3D elliptical-gap model at test size, on 1 or 2 MPI ranks: the front
 // weight of the localised domain integral (no first or second moment, the
 // folding at the symmetry planes, its gradient, where its ring edge crosses
-// a cell), and the elliptical-gap scene under uniform pressure of either
-// sign against Green-Sneddon/Irwin, with its result files; and Galin's
-// closed form for quadratic tractions in two known cases.
+// a cell), one gap under uniform pressure of either sign against
+// Green-Sneddon/Irwin, with its fields; Galin's closed form for quadratic
+// tractions in two known cases; and the summit searches on it and on FE.
 #define BOOST_TEST_MODULE elliptical_gap
 #define BOOST_TEST_NO_MAIN
-#include "fracture/elliptical_crack.h"
-#include "fracture/elliptical_summits.h"
+#include "closed_forms/elliptical_crack.h"
 #include "fracture/front_segment_extension.h"
 #include "fracture/front_stress_intensity.h"
-#include "scenes/elliptical_scenes.h"
+#include "problems/elliptical_gap.h"
+#include "searches/elliptical_gap_family.h"
+#include "searches/elliptical_summits.h"
 #include "test_support.h"
 
 #include <deal.II/base/bounding_box.h>
@@ -40,35 +41,32 @@ namespace
     return sum * h / 3;
   }
 
-  // The parameters of `scene` with a test-size model: box 10 a, 4 cells along
-  // the front, rings from 1e-2 b at ratio 2.5, degree 2, the direct solver.
-  Parameters test_size(const std::string &scene, const unsigned int sectors,
-                       const std::vector<double> &ring_radii)
+  // A test-size model: box 10 a, 4 cells along the front, `sectors` around
+  // it, rings from 1e-2 b at ratio 2.5, degree 2, the direct solver.
+  EllipticalModel test_size(const unsigned int sectors, const std::vector<double> &ring_radii)
   {
-    Parameters parameters             = default_parameters(scene);
-    auto      &model                  = *parameters.elliptical_model;
-    model.box_width                   = 10;
-    model.box_height                  = 10;
-    model.cells_along_front           = 4;
-    model.sectors                     = sectors;
-    model.front_cell_size             = 0.01;
-    model.ring_ratio                  = 2.5;
-    model.weight_half_width           = 1;
-    model.ring_radii                  = ring_radii;
-    parameters.finite_element->degree = 2;
-    parameters.linear_solver->type    = LinearSolverParameters::Type::direct;
-    return parameters;
+    auto  model                    = default_values<EllipticalModel>(elliptical_model_sections);
+    auto &mesh                     = model.model.mesh;
+    mesh.domain_width              = 10;
+    mesh.domain_height             = 10;
+    mesh.cells_along_front         = 4;
+    mesh.cells_around_front        = sectors;
+    mesh.front_cell_size           = 0.01;
+    mesh.ring_ratio                = 2.5;
+    model.weight_half_width        = 1;
+    model.ring_radii               = ring_radii;
+    model.model.degree             = 2;
+    model.model.linear_solver.type = LinearSolverParameters::Type::direct;
+    return model;
   }
 
   // 144 cells, 4515 DoFs: K_I within about 6e-2 (measured 5.6e-2).
-  Parameters test_size_parameters(const double pressure)
+  EllipticalGapMeasurement measure(const double pressure, const double aspect_ratio,
+                                   const ResultFolder *fields)
   {
-    Parameters parameters = test_size("elliptical-gap", 4, {0.2, 0.4});
-    auto      &gap        = *parameters.elliptical_gap;
-    gap.aspect_ratio      = 0.5;
-    gap.pressure          = pressure;
-    gap.front_points      = 3;
-    return parameters;
+    dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+    return measure_elliptical_gap(test_size(4, {0.2, 0.4}), {1, aspect_ratio, pressure, 3}, timer, std::cout,
+                                  fields);
   }
 } // namespace
 
@@ -149,15 +147,14 @@ BOOST_AUTO_TEST_CASE(ring_edge_crossings)
 }
 
 // K_I(phi) of either sign within the test-size error of the closed form, the
-// same on 1 and 2 ranks (the serial values, recorded, to 1e-8), and the result files.
+// same on 1 and 2 ranks (the serial values, recorded, to 1e-8), and the fields.
 BOOST_AUTO_TEST_CASE(uniform_pressure_of_either_sign)
 {
   for (const double pressure : {1e6, -2e6})
     {
-      const Parameters     parameters = test_size_parameters(pressure);
-      const ScratchFolder  scratch;
-      ResultFolder         results(scratch.path / "elliptical-gap", {});
-      EllipticalGapResults solved = run_elliptical_gap_scene(parameters, results, std::cout);
+      const ScratchFolder            scratch;
+      ResultFolder                   results(scratch.path / "elliptical-gap", {});
+      const EllipticalGapMeasurement solved = measure(pressure, 0.5, &results);
       results.commit();
       BOOST_TEST(solved.signed_sifs.size() == 2);
       for (const auto &ring : solved.signed_sifs)
@@ -172,7 +169,7 @@ BOOST_AUTO_TEST_CASE(uniform_pressure_of_either_sign)
       for (unsigned int i = 0; i < recorded.size(); ++i)
         BOOST_TEST(solved.signed_sifs.back()[i] == recorded[i] * pressure / 1e6, tt::tolerance(1e-8));
       BOOST_TEST(solved.opening_at_centre == solved.exact_opening_at_centre, tt::tolerance(6e-2));
-      for (const std::string file : {"front.csv", "summary.csv", "front.vtu", "solution.vtu", "solution.pvd"})
+      for (const std::string file : {"front.vtu", "solution.vtu", "solution.pvd"})
         BOOST_TEST(std::filesystem::is_regular_file(results.directory() / file), file);
     }
 }
@@ -182,11 +179,7 @@ BOOST_AUTO_TEST_CASE(uniform_pressure_of_either_sign)
 // raises K_I by 1.1e-3), the test-size 3D model within its 6e-2.
 BOOST_AUTO_TEST_CASE(circle_against_the_axisymmetric_model)
 {
-  Parameters parameters                   = test_size_parameters(1e6);
-  parameters.elliptical_gap->aspect_ratio = 1;
-  const ScratchFolder        scratch;
-  ResultFolder               results(scratch.path / "elliptical-gap", {});
-  const EllipticalGapResults solved = run_elliptical_gap_scene(parameters, results, std::cout);
+  const EllipticalGapMeasurement solved = measure(1e6, 1, nullptr);
   BOOST_TEST(solved.axisymmetric_sifs.size() == solved.angles.size());
   for (unsigned int i = 0; i < solved.angles.size(); ++i)
     {
@@ -252,26 +245,33 @@ BOOST_AUTO_TEST_CASE(summit_searches_on_the_closed_form)
   BOOST_TEST(adhesive.tension > 1.2020809449045589);
 }
 
-// The scene at test size (cells 4 along and 8 around the front, degree 2;
-// about 40 small models): FE within 5e-2 of the closed form for the circle
-// and Ay/Ax = 0.5, and its result files.
-BOOST_AUTO_TEST_CASE(elliptical_summits_scene_at_test_size)
+// The summit searches on FE models at test size (cells 4 along and 8 around
+// the front, degree 2; about 20 small models): the adhesionless gap-area
+// ratio and psi within 5e-2 of Galin's closed form for the circle and
+// Ay/Ax = 0.5.
+BOOST_AUTO_TEST_CASE(summit_searches_on_fe_models)
 {
-  Parameters parameters                                = test_size("elliptical-summits", 8, {0.2});
-  parameters.elliptical_summits->tension_aspect_ratios = {1, 0.5};
-  parameters.elliptical_summits->front_points          = 3;
-  const ScratchFolder            scratch;
-  ResultFolder                   results(scratch.path / "elliptical-summits", {});
-  const EllipticalSummitsResults solved = run_elliptical_summits_scene(parameters, results, std::cout);
-  results.commit();
-  BOOST_TEST(solved.largest_error < 5e-2);
-  for (unsigned int k = 0; k < 2; ++k)
+  dealii::TimerOutput     timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+  const EllipticalModel   model = test_size(8, {0.2});
+  EllipticalGapFamily     family(model.with_semi_axes(1, 1), model.weight_half_width, model.ring_radii.back(),
+                                 timer);
+  const EllipticalGapSifs fe = [&family](const double s, const std::vector<double> &angles) {
+    return family.unit_load_sifs(s, angles);
+  };
+  const EllipticalGapSifs galin = galin_unit_load_sifs;
+  const auto              ends  = [](const EllipticalGapSifs &sifs, const double s) {
+    const auto K = sifs(s, {0., M_PI / 2});
+    return std::array<EllipticalUnitLoadSifs, 2>{{K[0], K[1]}};
+  };
+  for (const double rho : {1., 0.5})
     {
-      BOOST_TEST(solved.fe[k].adhesionless.area_ratio == solved.exact[k].adhesionless.area_ratio,
+      const double s0 = adhesionless_summit_shape(fe, rho), g0 = adhesionless_summit_shape(galin, rho);
+      BOOST_TEST(adhesionless_gap(s0, ends(fe, s0)).area_ratio ==
+                     adhesionless_gap(g0, ends(galin, g0)).area_ratio,
                  tt::tolerance(5e-2));
-      BOOST_TEST(solved.fe[k].adhesive.tension == solved.exact[k].adhesive.tension, tt::tolerance(5e-2));
+      const double s1 = adhesive_summit_shape(fe, rho, s0), g1 = adhesive_summit_shape(galin, rho, g0);
+      BOOST_TEST(adhesive_gap(s1, rho, ends(fe, s1)).tension ==
+                     adhesive_gap(g1, rho, ends(galin, g1)).tension,
+                 tt::tolerance(5e-2));
     }
-  BOOST_TEST(solved.exact[0].adhesive.tension == 1.2020809449045589, tt::tolerance(1e-10));
-  for (const std::string file : {"adhesionless.csv", "adhesive.csv", "front.csv", "summary.csv"})
-    BOOST_TEST(std::filesystem::is_regular_file(results.directory() / file), file);
 }

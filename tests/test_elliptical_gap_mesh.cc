@@ -4,9 +4,9 @@
 // Green-Sneddon closed forms (circle limit, symmetries, volume and K_I from w).
 #define BOOST_TEST_MODULE elliptical_gap_mesh
 #define BOOST_TEST_NO_MAIN
+#include "closed_forms/elliptical_crack.h"
 #include "fe/boundary_ids.h"
 #include "fe/elliptical_gap_mesh.h"
-#include "fracture/elliptical_crack.h"
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/distributed/tria.h>

@@ -3,8 +3,9 @@
 // contact, warm-started load sweeps, and errors as exceptions.
 #define BOOST_TEST_MODULE half_space_contact
 #define BOOST_TEST_NO_MAIN
-#include "fracture/periodic_array.h"
+#include "closed_forms/periodic_array.h"
 #include "contact/half_space_contact.h"
+#include "statistics/random_field.h"
 #include "statistics/roughness.h"
 
 #include <boost/test/unit_test.hpp>

@@ -5,7 +5,7 @@
 // Westergaard's contact pressure.
 #define BOOST_TEST_MODULE periodic_array
 #define BOOST_TEST_NO_MAIN
-#include "fracture/periodic_array.h"
+#include "closed_forms/periodic_array.h"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 #include <boost/math/tools/minima.hpp>

@@ -3,11 +3,12 @@
 #define BOOST_TEST_MODULE scenes
 #define BOOST_TEST_NO_MAIN
 #include "output/table.h"
-#include "scenes/penny_gap_scene.h"
+#include "scenes/scene.h"
 #include "test_support.h"
 
 #include <boost/test/unit_test.hpp>
 
+#include <fstream>
 #include <iostream>
 
 namespace tt = boost::test_tools;
@@ -17,7 +18,7 @@ namespace
 {
   const std::vector<double> rings = {0.25, 0.5, 0.75};
 
-  PennySceneResults solve(const PennyGapModelParameters &model, const LoadParameters &load)
+  PennyGapMeasurement solve(const PennyGapModelParameters &model, const LoadParameters &load)
   {
     dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
     return solve_penny_gap(model, load, rings, timer);
@@ -26,7 +27,7 @@ namespace
   void check_against_closed_form(const PennyGapModelParameters &model, const LoadParameters &load,
                                  const double tolerance = 1e-4)
   {
-    const PennySceneResults results = solve(model, load);
+    const PennyGapMeasurement results = solve(model, load);
     for (const auto &ring : results.rings)
       {
         BOOST_TEST(ring.stress_intensity_factor == results.exact_stress_intensity_factor.value,
@@ -37,10 +38,6 @@ namespace
     BOOST_TEST(results.gap_volume == results.exact_gap_volume.value, tt::tolerance(tolerance));
   }
 
-  LoadParameters default_load()
-  {
-    return *default_parameters().load;
-  }
 } // namespace
 
 BOOST_AUTO_TEST_CASE(uniform_pressure)
@@ -94,11 +91,11 @@ BOOST_AUTO_TEST_CASE(clamped_far_boundary_and_other_scales)
 // the signed (interaction) form can tell.
 BOOST_AUTO_TEST_CASE(negative_stress_intensity_factor)
 {
-  const auto     model            = test_size_model(20, 3);
-  LoadParameters load             = default_load();
-  load.type                       = LoadParameters::Type::parabolic;
-  load.tension_radius             = model.geometry.gap_radius / 1.6;
-  const PennySceneResults results = solve(model, load);
+  const auto     model              = test_size_model(20, 3);
+  LoadParameters load               = default_load();
+  load.type                         = LoadParameters::Type::parabolic;
+  load.tension_radius               = model.geometry.gap_radius / 1.6;
+  const PennyGapMeasurement results = solve(model, load);
   BOOST_TEST(results.exact_stress_intensity_factor.value < 0);
   for (const auto &ring : results.rings)
     BOOST_TEST(ring.signed_stress_intensity_factor == results.exact_stress_intensity_factor.value,
@@ -113,22 +110,26 @@ BOOST_AUTO_TEST_CASE(gmsh_mesh)
   check_against_closed_form(model, default_load());
 }
 
-// The whole scene: its tables appear in the output folder, and only on commit.
+// The whole scene, read from its file: its tables appear in the output
+// folder, and only on commit.
 BOOST_AUTO_TEST_CASE(scene_writes_its_results_as_a_set)
 {
   const ScratchFolder scratch;
-  Parameters          parameters    = default_parameters();
-  parameters.mesh->tip_levels       = 12;
-  parameters.finite_element->degree = 2;
-  parameters.fields->write_fields   = true;
-  const auto         directory      = scratch.path / "results";
-  ResultFolder       results(directory, {});
+  const auto          prm = scratch.path / "scene.prm";
+  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    std::ofstream(prm) << "set Scene = penny-gap\nsubsection Mesh\n set Tip refinement levels = 12\nend\n"
+                          "subsection Finite element\n set Polynomial degree = 2\nend\n"
+                          "subsection Verification\n set Tolerance = 1e-3\nend\n";
+  MPI_Barrier(MPI_COMM_WORLD);
+  const SceneFile    file      = read_scene_file(prm.string());
+  const auto         directory = scratch.path / "results";
+  ResultFolder       results(directory, file.input_files);
   std::ostringstream log;
-  run_penny_gap_scene(parameters, results, log);
+  BOOST_TEST(file.scene->run(results, log).passed);
   BOOST_TEST(!std::filesystem::exists(directory));
   results.commit();
-  for (const char *file : {"rings.csv", "summary.csv", "solution.vtu", "solution.pvd"})
-    BOOST_TEST(std::filesystem::is_regular_file(directory / file), file);
+  for (const char *name : {"rings.csv", "summary.csv", "solution.vtu", "solution.pvd"})
+    BOOST_TEST(std::filesystem::is_regular_file(directory / name), name);
   BOOST_TEST(log.str().find("|K_I| relative error") != std::string::npos);
 }
 

@@ -3,9 +3,10 @@
 // fit, and the area-load curve with the FE g at test size.
 #define BOOST_TEST_MODULE statistics
 #define BOOST_TEST_NO_MAIN
-#include "fracture/adhesive_gap.h"
+#include "closed_forms/adhesive_gap.h"
 #include "input/input_error.h"
-#include "scenes/fe_gap_area_scene.h"
+#include "problems/rough_surface.h"
+#include "scenes/scene.h"
 #include "statistics/contact_area.h"
 #include "statistics/roughness.h"
 #include "test_support.h"
@@ -99,18 +100,18 @@ BOOST_AUTO_TEST_CASE(spectrum_file)
       scratch.path /
       ("psd-" + std::to_string(dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD)) + ".txt");
   std::ofstream(file) << "# q C(q)\n1e3 2e-20\n\n1e4 2e-23  # comment\n";
-  const PowerSpectrum spectrum = read_power_spectrum(file.string(), "Roughness/Spectrum file");
+  const PowerSpectrum spectrum = read_power_spectrum(file.string());
   BOOST_TEST(spectrum.wavenumbers.size() == 2u);
   BOOST_TEST(spectrum.densities[1] == 2e-23);
 
   std::ofstream(file) << "1e3 2e-20\n1e2 2e-23\n";
-  BOOST_CHECK_EXCEPTION(
-      read_power_spectrum(file.string(), "Roughness/Spectrum file"), InputError,
-      [](const InputError &e) { return std::string(e.what()).find("line 2") != std::string::npos; });
+  BOOST_CHECK_EXCEPTION(read_power_spectrum(file.string()), InputError, [](const InputError &e) {
+    return std::string(e.what()).find("line 2") != std::string::npos;
+  });
   std::ofstream(file) << "1e3 abc\n";
-  BOOST_CHECK_THROW(read_power_spectrum(file.string(), "Roughness/Spectrum file"), InputError);
+  BOOST_CHECK_THROW(read_power_spectrum(file.string()), InputError);
   std::filesystem::remove(file);
-  BOOST_CHECK_THROW(read_power_spectrum(file.string(), "Roughness/Spectrum file"), InputError);
+  BOOST_CHECK_THROW(read_power_spectrum(file.string()), InputError);
 }
 
 BOOST_AUTO_TEST_CASE(pressure_summits_both_conventions)
@@ -230,33 +231,35 @@ BOOST_AUTO_TEST_CASE(persson_variant)
 
 BOOST_AUTO_TEST_CASE(toughness_and_amplitude_parameters)
 {
-  const Scene             &scene = find_scene("rough-surface");
   dealii::ParameterHandler prm;
-  declare_scene(prm, scene);
+  RoughSurfaceProblem      surface;
+  Sections                 declaring(prm, false);
+  rough_surface_sections(declaring, surface);
   prm.parse_input_from_string(
       "subsection Material\n set Young's modulus E = 1e7\n set Poisson's ratio nu = 0.49\nend\n"
       "subsection Adhesion\n set Toughness given by = G_c\n set Work of adhesion G_c = 0.05\nend\n"
       "subsection Roughness\n set Amplitude given by = rms height\n set Rms height = 2e-6\nend\n");
-  const Parameters parameters = Parameters::parse(prm, scene.sections);
-  BOOST_TEST(parameters.adhesion->critical_stress_intensity == std::sqrt(1e7 / (1 - 0.49 * 0.49) * 0.05),
+  Sections reading(prm, true);
+  rough_surface_sections(reading, surface);
+  BOOST_TEST(surface.critical_stress_intensity == std::sqrt(1e7 / (1 - 0.49 * 0.49) * 0.05),
              tt::tolerance(1e-15));
-  const auto &r = *parameters.roughness;
+  const auto &r = surface.roughness;
   BOOST_TEST(std::sqrt(spectral_moments(power_law_spectrum(r.hurst, r.q0, r.zeta, r.amplitude)).m0) == 2e-6,
              tt::tolerance(1e-13));
 }
 
+// The scene at test size: the FE g at 8 tensions, A_nc within 1e-4 of the
+// closed-form g's, and its tables.
 BOOST_AUTO_TEST_CASE(fe_gap_function_aggregation)
 {
-  // Test size: the FE g at 8 tensions, A_nc within 1e-4 of the closed-form g's.
-  Parameters parameters                        = default_parameters("fe-gap-area");
-  parameters.mesh->tip_levels                  = 16;
-  parameters.finite_element->degree            = 3;
-  parameters.fe_gap_area->n_tabulated_tensions = 8;
-  parameters.area_load->n_points               = 4;
   const ScratchFolder scratch;
-  ResultFolder        results(scratch.path / "fe-gap-area", {});
-  std::ostringstream  log;
-  BOOST_TEST(run_fe_gap_area_scene(parameters, results, log) < 1e-4);
-  results.commit();
-  BOOST_TEST(std::filesystem::is_regular_file(scratch.path / "fe-gap-area" / "fe-gap-area.csv"));
+  const Verdict       verdict = run_scene_text("set Scene = fe-gap-area\n"
+                                                     "subsection Mesh\n set Tip refinement levels = 16\nend\n"
+                                                     "subsection Finite element\n set Polynomial degree = 3\nend\n"
+                                                     "subsection FE gap area\n set Tabulated tensions = 8\nend\n"
+                                                     "subsection Area-load\n set Number of points = 4\nend\n"
+                                                     "subsection Verification\n set Tolerance = 1e-4\nend\n",
+                                               scratch.path);
+  BOOST_TEST(verdict.passed, verdict.message);
+  BOOST_TEST(std::filesystem::is_regular_file(scratch.path / "results" / "fe-gap-area.csv"));
 }

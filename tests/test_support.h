@@ -1,33 +1,57 @@
-// Shared set-up for the unit tests: a scene's parameters at their declared
-// defaults, the penny-gap model at test size, and scratch folders.
+// Shared set-up for the unit tests: the models at the defaults of their
+// parameter entries and at test size, and scratch folders.
 #pragma once
 
-#include "scenes/scene_registry.h"
-#include "scenes/scene_support.h"
+#include "problems/penny_gap.h"
+#include "problems/periodic_gap.h"
+#include "scenes/scene.h"
 
 #include <deal.II/base/mpi.h>
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
-// The parameters `scene` reads, at their declared defaults.
-inline penny::Parameters default_parameters(const std::string &scene = "penny-gap")
+// The penny-gap model at the defaults of its entries.
+inline penny::PennyGapModelParameters default_penny_gap_model()
 {
-  const penny::Scene      &entry = penny::find_scene(scene);
-  dealii::ParameterHandler prm;
-  penny::declare_scene(prm, entry);
-  return penny::Parameters::parse(prm, entry.sections);
+  return penny::default_values<penny::PennyGapModelParameters>(penny::penny_gap_model_sections);
 }
 
 // The default penny-gap model with tip cells c/2^tip_levels wide.
 inline penny::PennyGapModelParameters test_size_model(const unsigned int tip_levels,
                                                       const unsigned int degree)
 {
-  penny::PennyGapModelParameters model = penny::penny_gap_model(default_parameters());
+  penny::PennyGapModelParameters model = default_penny_gap_model();
   model.mesh.tip_levels                = tip_levels;
   model.degree                         = degree;
   return model;
+}
+
+// The face load at the defaults of its entries.
+inline penny::LoadParameters default_load()
+{
+  const auto geometry = default_penny_gap_model().geometry;
+  return penny::default_values<penny::LoadParameters>(
+      [&](penny::Sections &sections, penny::LoadParameters &load) {
+        penny::face_load_section(sections, load, geometry);
+      });
+}
+
+// The periodic-gap model at the defaults of its entries, and its J-integral rings.
+struct PeriodicGapDefaults
+{
+  penny::PeriodicGapModelParameters model;
+  std::vector<double>               ring_radii;
+};
+inline PeriodicGapDefaults default_periodic_gap()
+{
+  return penny::default_values<PeriodicGapDefaults>(
+      [](penny::Sections &sections, PeriodicGapDefaults &defaults) {
+        penny::periodic_gap_model_sections(sections, defaults.model, defaults.ring_radii);
+      });
 }
 
 // A fresh folder in the temporary directory, the same on every MPI rank,
@@ -56,3 +80,19 @@ public:
 
   std::filesystem::path path;
 };
+
+// Runs the scene of the parameter file `text`, written into `folder`, with
+// its results committed to folder/results; returns its verdict.
+inline penny::Verdict run_scene_text(const std::string &text, const std::filesystem::path &folder)
+{
+  const auto prm = folder / "scene.prm";
+  if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
+    std::ofstream(prm) << text;
+  MPI_Barrier(MPI_COMM_WORLD);
+  const penny::SceneFile file = penny::read_scene_file(prm.string());
+  penny::ResultFolder    results(folder / "results", file.input_files);
+  std::ostringstream     log;
+  const penny::Verdict   verdict = file.scene->run(results, log);
+  results.commit();
+  return verdict;
+}

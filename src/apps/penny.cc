@@ -1,6 +1,6 @@
 // penny: runs one scene from a deal.II parameter file.
 #include "input/input_error.h"
-#include "scenes/scene_registry.h"
+#include "scenes/scene.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -21,15 +21,15 @@ namespace
     out << "Usage: penny SCENE.prm                  run the scene described by the parameter file\n"
            "       penny --print-parameters [SCENE] the entries SCENE reads, with defaults and "
            "documentation\n"
-           "                                        (SCENE defaults to the first below)\n"
+           "                                        (SCENE defaults to penny-gap)\n"
            "       penny --help                     show this text\n"
            "\n"
            "A parameter file names its scene in the entry 'Scene'. Results go to the folder\n"
            "'Output/Directory', replaced whole by each run. Examples are in prms/. Scenes:\n";
     std::size_t width = 0;
-    for (const auto &scene : penny::scene_registry())
+    for (const auto &scene : penny::scene_types())
       width = std::max(width, scene.name.size());
-    for (const auto &scene : penny::scene_registry())
+    for (const auto &scene : penny::scene_types())
       out << "  " << std::left << std::setw(width + 2) << scene.name << scene.description << '\n';
   }
 
@@ -129,9 +129,7 @@ int main(int argc, char **argv)
         print_usage(log);
       else if (argument == "--print-parameters" && argc <= 3)
         {
-          dealii::ParameterHandler prm;
-          penny::declare_scene(prm, argc == 3 ? penny::find_scene(argv[2]) : penny::scene_registry().front());
-          prm.print_parameters(log, dealii::ParameterHandler::PRM);
+          penny::print_parameters(penny::find_scene(argc == 3 ? argv[2] : penny::default_scene), log);
         }
       else if (argc != 2 || argument.empty() || argument[0] == '-')
         {

@@ -23,6 +23,23 @@
 
 namespace penny
 {
+  // An isotropic linear elastic solid.
+  struct MaterialParameters
+  {
+    double youngs_modulus; // E (Pa)
+    double poissons_ratio; // nu
+
+    double plane_strain_modulus() const
+    {
+      return youngs_modulus / (1 - poissons_ratio * poissons_ratio);
+    } // E' (Pa)
+    double lame_lambda() const
+    {
+      return youngs_modulus * poissons_ratio / ((1 + poissons_ratio) * (1 - 2 * poissons_ratio));
+    }
+    double lame_mu() const { return youngs_modulus / (2 * (1 + poissons_ratio)); }
+  };
+
   using dealii::Point;
   using Tensor3 = dealii::Tensor<2, 3>;
   using Strain  = dealii::SymmetricTensor<2, 3>;

@@ -13,7 +13,6 @@
 
 #include "fe/elliptical_gap_mesh.h"
 #include "fe/linear_elastic_system.h"
-#include "input/fe_parameters.h"
 
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/tria.h>

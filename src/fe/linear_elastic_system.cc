@@ -372,9 +372,8 @@ namespace penny
           }
         catch (const SolverControl::NoConvergence &failure)
           {
-            throw std::runtime_error("solve: CG with AMG did not converge in " +
-                                     std::to_string(failure.last_step) +
-                                     " iterations (Linear solver/Maximum iterations)");
+            throw LinearSolverFailure("solve: CG with AMG did not converge in " +
+                                      std::to_string(failure.last_step) + " iterations, its limit");
           }
         report.iterations = control.last_step();
       }
@@ -457,8 +456,7 @@ namespace penny
       }
     catch (const ExceptionBase &exception)
       {
-        throw std::runtime_error("solve: " + solver_name() +
-                                 " failed (Linear solver/Type): " + one_line(exception));
+        throw LinearSolverFailure("solve: " + solver_name() + " failed: " + one_line(exception));
       }
 
     // The graded mesh makes the matrix ill-conditioned (cell widths span many
@@ -484,8 +482,7 @@ namespace penny
           }
         catch (const ExceptionBase &exception)
           {
-            throw std::runtime_error("solve: " + solver_name() +
-                                     " failed (Linear solver/Type): " + one_line(exception));
+            throw LinearSolverFailure("solve: " + solver_name() + " failed: " + one_line(exception));
           }
         u += correction;
         const double previous    = report.relative_residual;
@@ -506,9 +503,9 @@ namespace penny
     if (report.relative_residual > linear_solver.tolerance)
       {
         std::ostringstream message;
-        message << "solve: relative residual " << report.relative_residual
-                << " exceeds Linear solver/Tolerance = " << linear_solver.tolerance;
-        throw std::runtime_error(message.str());
+        message << "solve: relative residual " << report.relative_residual << " exceeds the tolerance "
+                << linear_solver.tolerance;
+        throw LinearSolverFailure(message.str());
       }
     constraints.distribute(u);
     DisplacementVector ghosted(owned, relevant, get_communicator());

@@ -15,7 +15,6 @@
 #pragma once
 
 #include "fe/elasticity.h"
-#include "input/fe_parameters.h"
 
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -34,6 +33,7 @@
 
 #include <functional>
 #include <memory>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -41,6 +41,24 @@ namespace penny
 {
   // A displacement with the ghost entries each rank needs to evaluate its cells.
   using DisplacementVector = dealii::TrilinosWrappers::MPI::Vector;
+
+  struct LinearSolverParameters
+  {
+    enum class Type
+    {
+      direct, // CHOLMOD on one rank, MUMPS on several
+      cg_amg  // conjugate gradients with Trilinos' algebraic multigrid
+    };
+    Type         type;
+    double       tolerance; // relative residual |A u - b|/|b| every solve must reach
+    unsigned int max_iterations;
+  };
+
+  // A solve that failed or missed its tolerance.
+  struct LinearSolverFailure : std::runtime_error
+  {
+    using std::runtime_error::runtime_error;
+  };
 
   struct SolveReport
   {

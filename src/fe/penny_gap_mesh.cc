@@ -6,6 +6,7 @@
 #include "input/input_error.h"
 #include "parallel/collective.h"
 
+#include <deal.II/distributed/shared_tria.h>
 #include <deal.II/grid/grid_in.h>
 #include <deal.II/grid/grid_tools.h>
 
@@ -151,7 +152,7 @@ namespace penny
     {
       std::string msh;
       run_on_rank_zero(communicator, [&]() {
-        const std::string entry  = "Mesh/Mesh file = " + in_quotes(geo_file);
+        const std::string entry  = in_quotes(geo_file);
         std::string       folder = (std::filesystem::temp_directory_path() / "penny-gmsh-XXXXXX").string();
         if (!mkdtemp(folder.data()))
           throw std::runtime_error("mesh: could not create a temporary folder for gmsh: " +
@@ -222,7 +223,7 @@ namespace penny
     void read_gmsh(Triangulation<2> &triangulation, const GeometryParameters &geometry,
                    const MeshParameters &mesh)
     {
-      const std::string entry  = "Mesh/Mesh file = " + in_quotes(mesh.mesh_file);
+      const std::string entry  = in_quotes(mesh.mesh_file);
       const bool        is_geo = std::filesystem::path(mesh.mesh_file).extension() == ".geo";
       try
         {
@@ -288,7 +289,7 @@ namespace penny
           message.precision(10);
           message << source << " spans r in [" << box.lower_bound(0) << ", " << box.upper_bound(0)
                   << "], z in [" << box.lower_bound(1) << ", " << box.upper_bound(1)
-                  << "], not the half model 0 <= r <= R = " << R << ", 0 <= z <= H = " << H << " of Geometry";
+                  << "], not the half model 0 <= r <= R = " << R << ", 0 <= z <= H = " << H;
           throw InputError(message.str());
         }
 
@@ -360,26 +361,87 @@ namespace penny
                            dealii::Utilities::to_string(expected) + " m of their side");
     }
 
+    // A gmsh mesh that is the half model of the geometry, with the tip at a vertex.
+    void read_checked_gmsh(Triangulation<2> &triangulation, const GeometryParameters &geometry,
+                           const MeshParameters &mesh)
+    {
+      read_gmsh(triangulation, geometry, mesh);
+      const std::string source = in_quotes(mesh.mesh_file);
+      if (!has_vertex_at(triangulation, crack_tip(geometry), 1e-12 * geometry.gap_radius))
+        throw InputError(source + " has no vertex at the crack tip (c, 0) = (" +
+                         shortest(geometry.gap_radius) + ", 0)");
+      check_against_geometry(triangulation, geometry, source);
+    }
   } // namespace
 
   void make_penny_gap_mesh(Triangulation<2> &triangulation, const GeometryParameters &geometry,
-                           const MeshParameters &mesh, const std::function<void(double)> &check_size)
+                           const MeshParameters &mesh)
   {
     if (mesh.generator == MeshParameters::Generator::builtin)
       {
-        check_size(quadtree_cells(geometry, mesh));
         generate_quadtree(triangulation, geometry, mesh);
         check_against_geometry(triangulation, geometry, "the built-in mesh");
       }
     else
-      {
-        read_gmsh(triangulation, geometry, mesh);
-        const std::string source = "Mesh/Mesh file = " + in_quotes(mesh.mesh_file);
-        if (!has_vertex_at(triangulation, crack_tip(geometry), 1e-12 * geometry.gap_radius))
-          throw InputError(source + " has no vertex at the crack tip (c, 0) of Geometry/Gap radius c");
-        check_against_geometry(triangulation, geometry, source);
-        check_size(triangulation.n_active_cells() * std::pow(4., mesh.global_refinements));
-      }
+      read_checked_gmsh(triangulation, geometry, mesh);
     triangulation.refine_global(mesh.global_refinements);
+  }
+
+  double penny_gap_mesh_cells(const GeometryParameters &geometry, const MeshParameters &mesh,
+                              const MPI_Comm communicator)
+  {
+    if (mesh.generator == MeshParameters::Generator::builtin)
+      return quadtree_cells(geometry, mesh);
+    parallel::shared::Triangulation<2> coarse(communicator);
+    read_checked_gmsh(coarse, geometry, mesh);
+    return coarse.n_active_cells() * std::pow(4., mesh.global_refinements);
+  }
+
+  // The quadtree's construction, counted: a coarse grid of width s, then at
+  // each width w from s down to the tip width the cells of the lattice of
+  // width w (origin 0) whose box lies closer to the tip than
+  // `grading_distance` widths are split, each into four. A cell of width w
+  // exists where its parent was split, and a cell close enough to be split
+  // has a parent closer still, so the split cells of width w are exactly the
+  // close lattice cells inside the domain. The same holds for the cells over
+  // the gap face, split down to their own width. The balancing of levels across
+  // vertices adds a few per cent (tests/test_problem_size.cc).
+  double quadtree_cells(const GeometryParameters &physical_geometry, const MeshParameters &mesh)
+  {
+    const double c     = physical_geometry.gap_radius;
+    const double ratio = mesh.cell_aspect_ratio;
+    const double z0    = std::min(c, physical_geometry.domain_height / 2);
+    const double R     = physical_geometry.domain_radius;
+    const double H     = z0 + (physical_geometry.domain_height - z0) / ratio;
+    const double s     = c * std::pow(2., std::floor(std::log2(std::min(R, H) / (2 * c))));
+    const double n_r   = std::max(1., std::floor(R / s + 1e-12));
+    const double n_z   = std::max(1., std::floor(H / s + 1e-12));
+    const double g     = mesh.grading_distance;
+
+    double       cells      = n_r * n_z;
+    const double tip_width  = c / std::pow(2., mesh.tip_levels);
+    const double face_width = c / std::pow(2., mesh.gap_face_levels);
+    for (double w = s; w > std::min(tip_width, face_width) * (1 + 1e-9); w /= 2)
+      {
+        // Lattice columns i (r in [i w, (i + 1) w]) and rows j near the tip
+        // (c, 0), or with their corner over the gap face.
+        const double tip       = c / w;
+        const bool   near_face = w > face_width * (1 + 1e-9);
+        const bool   near_tip  = w > tip_width * (1 + 1e-9);
+        const double first     = near_face ? 0. : std::max(0., std::floor(tip - g - 1));
+        const double last      = std::min(n_r * s / w - 1, std::ceil(tip + g + 1));
+        const double top       = std::min(n_z * s / w - 1, std::ceil(std::max(g, near_face ? tip : 0.)));
+        double       n_refined = 0;
+        for (double i = first; i <= last; ++i)
+          for (double j = 0; j <= top; ++j)
+            {
+              const double dr = std::max({i - tip, tip - (i + 1), 0.});
+              if ((near_tip && std::hypot(dr, j) < g * (1 - 1e-9)) ||
+                  (near_face && i < tip * (1 - 1e-9) && j < tip * (1 - 1e-9)))
+                ++n_refined;
+            }
+        cells += 3 * n_refined;
+      }
+    return cells * std::pow(4., mesh.global_refinements);
   }
 } // namespace penny

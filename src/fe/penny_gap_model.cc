@@ -2,10 +2,7 @@
 
 #include "fe/boundary_faces.h"
 #include "fe/boundary_ids.h"
-#include "fe/penny_gap_mesh.h"
-#include "fe/problem_size.h"
 #include "fe/tip_graded_mesh.h"
-#include "input/input_error.h"
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/grid/grid_refinement.h>
@@ -14,7 +11,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <sstream>
 
 namespace penny
 {
@@ -33,36 +29,12 @@ namespace penny
       return conditions;
     }
 
-    // Refuses a model of `cells` cells that would not fit in memory, naming
-    // the entries that make it large.
-    void check_model_size(const PennyGapModelParameters &model, const double cells,
-                          const std::string &more_entries = "")
-    {
-      const auto        &mesh = model.mesh;
-      std::ostringstream entries;
-      entries.precision(3);
-      if (mesh.generator == MeshParameters::Generator::builtin)
-        entries << "Mesh/Tip refinement levels = " << mesh.tip_levels
-                << ", Grading distance = " << mesh.grading_distance << ", ";
-      else
-        entries << "Mesh/Mesh file = " << in_quotes(mesh.mesh_file) << ", ";
-      entries << "Global refinements = " << mesh.global_refinements
-              << ", Finite element/Polynomial degree = " << model.degree << more_entries;
-      if (mesh.generator == MeshParameters::Generator::builtin)
-        entries << " (R = " << model.geometry.domain_radius / model.geometry.gap_radius
-                << " c, H = " << model.geometry.domain_height / model.geometry.gap_radius << " c)";
-      check_problem_size(problem_size(cells, model.degree, model.linear_solver.type,
-                                      Utilities::MPI::n_mpi_processes(model.communicator)),
-                         entries.str(), model.communicator);
-    }
-
     // Meshed before the system that distributes its degrees of freedom on it.
     const Triangulation<2> &meshed(Triangulation<2> &triangulation, const PennyGapModelParameters &model,
                                    TimerOutput &timer)
     {
       TimerOutput::Scope scope(timer, "mesh");
-      make_penny_gap_mesh(triangulation, model.geometry, model.mesh,
-                          [&](const double cells) { check_model_size(model, cells); });
+      make_penny_gap_mesh(triangulation, model.geometry, model.mesh);
       return triangulation;
     }
   } // namespace
@@ -102,10 +74,6 @@ namespace penny
                                        ComponentMask(), nullptr, numbers::invalid_unsigned_int,
                                        triangulation.locally_owned_subdomain());
       Utilities::MPI::sum(indicators, triangulation.get_communicator(), indicators);
-      // Each refined cell becomes four, and balancing the levels refines about as many again.
-      check_model_size(parameters, triangulation.n_active_cells() * (1 + 6 * fraction),
-                       ", Convergence/Refined fraction = " + Utilities::to_string(fraction) +
-                           " (adaptive cycles)");
       GridRefinement::refine_and_coarsen_fixed_number(triangulation, indicators, fraction, 0.);
       triangulation.execute_coarsening_and_refinement();
     }

@@ -8,9 +8,9 @@
 // factorised once, and each load is one more right-hand side.
 #pragma once
 
-#include "fe/face_load.h"
+#include "closed_forms/face_load.h"
 #include "fe/linear_elastic_system.h"
-#include "input/fe_parameters.h"
+#include "fe/penny_gap_mesh.h"
 
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/shared_tria.h>
@@ -28,7 +28,8 @@ namespace penny
     // The ranks that share the model: all of them, or one alone when a sweep
     // gives each rank its own solves.
     MPI_Comm communicator = MPI_COMM_WORLD;
-    // Finite element/Degree grading: 0 for the degree on every cell.
+    // Tip refinement levels per step down in degree towards the tip
+    // (fe/tip_graded_mesh.h): 0 for the degree on every cell.
     unsigned int levels_per_degree = 0;
 
     // The same model for a gap of radius c: R/c and H/c kept, so the meshes
@@ -56,6 +57,9 @@ namespace penny
     // Refines the `fraction` of cells with the largest Kelly indicators of u
     // (the same cells on every rank), then rebuilds and factorises the system.
     void refine_by_kelly(const DisplacementVector &u, double fraction);
+    // The cells after such a refinement, about: each refined cell becomes
+    // four, and balancing the levels refines about as many again.
+    static double cells_after_refinement(double cells, double fraction) { return cells * (1 + 6 * fraction); }
 
     // u_z at the centre of the gap face: the opening of one face at r = 0 (m).
     double opening_at_centre(const DisplacementVector &u) const;

@@ -11,7 +11,6 @@
 #pragma once
 
 #include "fe/linear_elastic_system.h"
-#include "input/fe_parameters.h"
 
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/shared_tria.h>
@@ -34,8 +33,8 @@ namespace penny
     // The ranks that share the model: all of them, or one alone when a sweep
     // gives each rank its own solves.
     MPI_Comm communicator = MPI_COMM_WORLD;
-    // Finite element/Degree grading (in units of min(c, lambda/2 - c)): 0 for
-    // the degree on every cell.
+    // Tip refinement levels (below min(c, lambda/2 - c)) per step down in
+    // degree towards the tip (fe/tip_graded_mesh.h): 0 for the degree on every cell.
     unsigned int levels_per_degree = 0;
 
     // The same model with the gap half-width c.

@@ -16,54 +16,6 @@
 
 namespace penny
 {
-  // The quadtree's construction, counted: a coarse grid of width s, then at
-  // each width w from s down to the tip width the cells of the lattice of
-  // width w (origin 0) whose box lies closer to the tip than
-  // `grading_distance` widths are split, each into four. A cell of width w
-  // exists where its parent was split, and a cell close enough to be split
-  // has a parent closer still, so the split cells of width w are exactly the
-  // close lattice cells inside the domain. The same holds for the cells over
-  // the gap face, split down to their own width. The balancing of levels across
-  // vertices adds a few per cent (tests/test_problem_size.cc).
-  double quadtree_cells(const GeometryParameters &physical_geometry, const MeshParameters &mesh)
-  {
-    const double c     = physical_geometry.gap_radius;
-    const double ratio = mesh.cell_aspect_ratio;
-    const double z0    = std::min(c, physical_geometry.domain_height / 2);
-    const double R     = physical_geometry.domain_radius;
-    const double H     = z0 + (physical_geometry.domain_height - z0) / ratio;
-    const double s     = c * std::pow(2., std::floor(std::log2(std::min(R, H) / (2 * c))));
-    const double n_r   = std::max(1., std::floor(R / s + 1e-12));
-    const double n_z   = std::max(1., std::floor(H / s + 1e-12));
-    const double g     = mesh.grading_distance;
-
-    double       cells      = n_r * n_z;
-    const double tip_width  = c / std::pow(2., mesh.tip_levels);
-    const double face_width = c / std::pow(2., mesh.gap_face_levels);
-    for (double w = s; w > std::min(tip_width, face_width) * (1 + 1e-9); w /= 2)
-      {
-        // Lattice columns i (r in [i w, (i + 1) w]) and rows j near the tip
-        // (c, 0), or with their corner over the gap face.
-        const double tip       = c / w;
-        const bool   near_face = w > face_width * (1 + 1e-9);
-        const bool   near_tip  = w > tip_width * (1 + 1e-9);
-        const double first     = near_face ? 0. : std::max(0., std::floor(tip - g - 1));
-        const double last      = std::min(n_r * s / w - 1, std::ceil(tip + g + 1));
-        const double top       = std::min(n_z * s / w - 1, std::ceil(std::max(g, near_face ? tip : 0.)));
-        double       n_refined = 0;
-        for (double i = first; i <= last; ++i)
-          for (double j = 0; j <= top; ++j)
-            {
-              const double dr = std::max({i - tip, tip - (i + 1), 0.});
-              if ((near_tip && std::hypot(dr, j) < g * (1 - 1e-9)) ||
-                  (near_face && i < tip * (1 - 1e-9) && j < tip * (1 - 1e-9)))
-                ++n_refined;
-            }
-        cells += 3 * n_refined;
-      }
-    return cells * std::pow(4., mesh.global_refinements);
-  }
-
   // Calibrated on this project's meshes (tests/test_problem_size.cc checks
   // the first two against built systems): Q_p elements with two components
   // have about 2 p (p + 1/2) degrees of freedom per cell on the graded

@@ -1,12 +1,11 @@
-// How large a penny-gap model will be, known before it is built: the cells of
-// the built-in quadtree counted from the parameters, the degrees of freedom,
-// matrix entries and memory that follow from the cells, and the memory this
-// run can get. A model that would not fit is refused with one line naming
-// the entries that make it large, instead of ending in std::bad_alloc after
-// minutes of work.
+// How large a 2D model will be, known before it is built: the degrees of
+// freedom, matrix entries and memory that follow from its cells, and the
+// memory this run can get. A model that would not fit is refused with one
+// line naming the entries that make it large, instead of ending in
+// std::bad_alloc after minutes of work.
 #pragma once
 
-#include "input/fe_parameters.h"
+#include "fe/linear_elastic_system.h"
 
 #include <mpi.h>
 
@@ -14,10 +13,6 @@
 
 namespace penny
 {
-  // Active cells of the built-in quadtree (fe/penny_gap_mesh.cc) after the
-  // global refinements, counted level by level without building it.
-  double quadtree_cells(const GeometryParameters &geometry, const MeshParameters &mesh);
-
   struct ProblemSize
   {
     double cells;

@@ -1,8 +1,8 @@
 #include "output/field_output.h"
 
+#include "closed_forms/sneddon_solution.h"
 #include "fe/boundary_faces.h"
 #include "fe/boundary_ids.h"
-#include "fracture/sneddon_solution.h"
 #include "output/table.h"
 #include "output/vtu_writer.h"
 

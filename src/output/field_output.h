@@ -13,8 +13,8 @@
 // Lagrange cells of the element's degree, with units in the VTU metadata.
 #pragma once
 
+#include "closed_forms/face_load.h"
 #include "fe/elasticity.h"
-#include "fe/face_load.h"
 #include "fe/linear_elastic_system.h"
 #include "fracture/crack_extension.h"
 #include "output/result_folder.h"

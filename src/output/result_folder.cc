@@ -114,7 +114,7 @@ namespace penny
 
   void ResultFolder::prepare(const std::vector<fs::path> &input_files)
   {
-    const std::string entry  = "Output/Directory = " + in_quotes(final_directory.string());
+    const std::string entry  = in_quotes(final_directory.string());
     const fs::path    target = folder();
     const fs::path    parent = target.parent_path();
     if (!target.has_filename() || target == parent)

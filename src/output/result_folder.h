@@ -1,11 +1,11 @@
 // A run's results appear as a set or not at all. Every file goes into a fresh
-// staging folder beside Output/Directory; when the scene has finished, the
-// staging folder takes the place of Output/Directory in one rename, and the
+// staging folder beside the result folder; when the scene has finished, the
+// staging folder takes the place of the result folder in one rename, and the
 // previous results go. A run that fails removes its staging folder and leaves
 // the previous results untouched; one that is killed leaves at most a stale
 // staging folder, which the next run into the same folder removes.
 //
-// Output/Directory belongs to penny: it is replaced whole, so it must be new,
+// The result folder belongs to penny: it is replaced whole, so it must be new,
 // empty, or an earlier result folder (marked by the file .penny-results). One
 // run at a time holds it: an flock on the lock file .NAME.lock beside it, held
 // until the results are in place and released by the kernel when a run dies.
@@ -26,8 +26,9 @@ namespace penny
   class ResultFolder
   {
   public:
-    // Locks Output/Directory, checks it and creates the staging folder; throws
-    // InputError (naming Output/Directory) where that is impossible, where
+    // Locks `directory`, checks it and creates the staging folder; throws
+    // InputError (its message starting with the folder's name in quotes)
+    // where that is impossible, where
     // another run holds the folder, or where replacing the folder would remove
     // the working folder or one of `input_files`.
     ResultFolder(const std::filesystem::path              &directory,

@@ -8,7 +8,9 @@
 
 #include <mpi.h>
 
+#include <cstring>
 #include <functional>
+#include <type_traits>
 #include <vector>
 
 namespace penny
@@ -21,6 +23,25 @@ namespace penny
   std::vector<std::vector<double>>
   spread_over_ranks(MPI_Comm communicator, unsigned int n,
                     const std::function<std::vector<double>(unsigned int)> &piece);
+
+  // The same with each result a struct of doubles (two K_I, say), which
+  // travels as its doubles.
+  template <typename Row, typename Piece>
+  std::vector<Row> spread_over_ranks(const MPI_Comm communicator, const unsigned int n, Piece &&piece)
+  {
+    static_assert(std::is_trivially_copyable_v<Row> && sizeof(Row) % sizeof(double) == 0,
+                  "a row travels as its doubles");
+    const auto       rows = spread_over_ranks(communicator, n, [&](const unsigned int i) {
+      const Row           row = piece(i);
+      std::vector<double> values(sizeof(Row) / sizeof(double));
+      std::memcpy(values.data(), &row, sizeof(Row));
+      return values;
+    });
+    std::vector<Row> result(n);
+    for (unsigned int i = 0; i < n; ++i)
+      std::memcpy(&result[i], rows[i].data(), sizeof(Row));
+    return result;
+  }
 
   // The ranks of this run on this machine, which share its memory while they
   // build their pieces at once: as the launcher tells each rank (Open MPI's

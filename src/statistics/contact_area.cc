@@ -1,6 +1,6 @@
 #include "statistics/contact_area.h"
 
-#include "fracture/adhesive_gap.h"
+#include "closed_forms/adhesive_gap.h"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 

@@ -1,6 +1,6 @@
 #include "statistics/roughness.h"
 
-#include "fracture/adhesive_gap.h"
+#include "closed_forms/adhesive_gap.h"
 #include "input/input_error.h"
 
 #include <Eigen/Dense>
@@ -17,12 +17,11 @@ namespace penny
     return {{q0, zeta * q0}, {C0, C0 * std::pow(zeta, -2 * (hurst + 1))}};
   }
 
-  PowerSpectrum read_power_spectrum(const std::string &filename, const std::string &entry)
+  PowerSpectrum read_power_spectrum(const std::string &filename)
   {
     std::ifstream in(filename);
     if (!in)
-      throw InputError(entry + " = '" + filename +
-                       "' cannot be read (expected two columns q (1/m), C(q) (m^4))");
+      throw InputError(in_quotes(filename) + " cannot be read (expected two columns q (1/m), C(q) (m^4))");
     PowerSpectrum spectrum;
     std::string   line;
     for (unsigned int number = 1; std::getline(in, line); ++number)
@@ -37,13 +36,13 @@ namespace penny
                            q > 0 && C > 0 &&
                            (spectrum.wavenumbers.empty() || q > spectrum.wavenumbers.back());
         if (!valid)
-          throw InputError(entry + " = '" + filename + "', line " + std::to_string(number) +
+          throw InputError(in_quotes(filename) + ", line " + std::to_string(number) +
                            ": expected two numbers q > 0 (increasing) and C(q) > 0");
         spectrum.wavenumbers.push_back(q);
         spectrum.densities.push_back(C);
       }
     if (spectrum.wavenumbers.size() < 2)
-      throw InputError(entry + " = '" + filename + "' holds fewer than two rows q C(q)");
+      throw InputError(in_quotes(filename) + " holds fewer than two rows q C(q)");
     return spectrum;
   }
 

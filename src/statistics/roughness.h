@@ -22,9 +22,27 @@ namespace penny
   // h0 = (h0/lambda0) lambda0 with lambda0 = 2 pi/q0.
   PowerSpectrum power_law_spectrum(double hurst, double q0, double zeta, double h0);
 
+  // The height PSD of a rough surface: the paper's power law (its H, q0,
+  // zeta and amplitude h0) or the table of a file.
+  struct RoughnessParameters
+  {
+    enum class Spectrum
+    {
+      power_law,
+      file
+    };
+    Spectrum    spectrum;
+    double      hurst;     // H
+    double      q0;        // long-wavelength cut-off (1/m)
+    double      zeta;      // magnification q1/q0
+    double      amplitude; // h0 (m) of the power law
+    std::string spectrum_file;
+  };
+
   // A two-column text file "q C(q)" (1/m, m^4), '#' starts a comment. Throws
-  // InputError naming `entry` when the file is missing or not a valid table.
-  PowerSpectrum read_power_spectrum(const std::string &filename, const std::string &entry);
+  // InputError, its message starting with the file name in quotes, when the
+  // file is missing or not a valid table.
+  PowerSpectrum read_power_spectrum(const std::string &filename);
 
   // Profile (one-direction) moments m_n = int q_x^n C(q) d^2q of the heights,
   // Nayak's definition: m0 the height variance, m2 the slope variance along a

@@ -1,0 +1,233 @@
+#include "input/entries.h"
+
+#include <deal.II/base/exceptions.h>
+#include <deal.II/base/utilities.h>
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+namespace penny
+{
+  using dealii::ParameterHandler;
+  namespace Patterns = dealii::Patterns;
+
+  namespace
+  {
+    // An end of an interval as a reader writes it: inf, 0.5, 1e30, 1e-8.
+    std::string end_text(const double x)
+    {
+      if (std::isinf(x))
+        return x < 0 ? "-inf" : "inf";
+      std::string       text = shortest(x);
+      const std::size_t e    = text.find('e');
+      if (e == std::string::npos)
+        return text;
+      std::string exponent = text.substr(e + 1);
+      const bool  negative = exponent[0] == '-';
+      exponent             = exponent.substr(exponent[0] == '-' || exponent[0] == '+' ? 1 : 0);
+      exponent.erase(0, std::min(exponent.find_first_not_of('0'), exponent.size() - 1));
+      return text.substr(0, e + 1) + (negative ? "-" : "") + exponent;
+    }
+
+    // The documentation as printed: what the entry is, then what it allows.
+    std::string documented(const std::string &documentation, const std::string &range)
+    {
+      return documentation + (range.empty() ? "" : " Allowed: " + range + ".");
+    }
+
+    std::string joined(const std::vector<std::string> &items, const std::string &separator)
+    {
+      std::string text;
+      for (const std::string &item : items)
+        text += (text.empty() ? "" : separator) + item;
+      return text;
+    }
+  } // namespace
+
+  Range interval(const std::string &brackets, const double lo, const double hi, const std::string &unit)
+  {
+    if (brackets.size() != 2 || std::string("[(").find(brackets[0]) == std::string::npos ||
+        std::string("])").find(brackets[1]) == std::string::npos)
+      throw std::logic_error("interval: brackets must be one of [], [), (], ()");
+    const bool lo_open = brackets[0] == '(', hi_open = brackets[1] == ')';
+    return {brackets.substr(0, 1) + end_text(lo) + ", " + end_text(hi) + brackets.substr(1) +
+                (unit.empty() ? "" : " " + unit),
+            [=](const double x) { return (lo_open ? x > lo : x >= lo) && (hi_open ? x < hi : x <= hi); }};
+  }
+
+  Range magnitude(const std::string &unit)
+  {
+    return {"[1e-30, 1e30] " + unit,
+            [](const double x) { return x >= smallest_magnitude && x <= largest_magnitude; }};
+  }
+
+  Range signed_magnitude(const std::string &unit)
+  {
+    return {"0 or |x| in [1e-30, 1e30] " + unit, [](const double x) {
+              return x == 0 || (std::abs(x) >= smallest_magnitude && std::abs(x) <= largest_magnitude);
+            }};
+  }
+
+  Entries::Entries(ParameterHandler &prm, std::string subsection, const bool reading,
+                   const std::string &folder)
+      : prm(prm), subsection(std::move(subsection)), reading_(reading), folder(folder)
+  {
+  }
+
+  void Entries::number(const std::string &entry, double &value, const double default_value,
+                       const Range &range, const std::string &documentation)
+  {
+    if (!reading_)
+      {
+        prm.declare_entry(entry, shortest(default_value), Patterns::Double(),
+                          documented(documentation, range.text));
+        return;
+      }
+    // A value that no double holds (a denormal, an overflow) is outside the range too.
+    try
+      {
+        value = prm.get_double(entry);
+      }
+    catch (const dealii::ExceptionBase &)
+      {
+        throw InputError(name(entry) + " = " + in_quotes(prm.get(entry)) + " is outside the allowed range " +
+                         range.text);
+      }
+    require(range.contains(value), entry, value, range.text);
+  }
+
+  void Entries::integer_entry(const std::string &entry, long long &value, const long long default_value,
+                              const long long lo, const long long hi, const std::string &documentation)
+  {
+    const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
+    if (!reading_)
+      {
+        prm.declare_entry(entry, std::to_string(default_value), Patterns::Integer(),
+                          documented(documentation, range));
+        return;
+      }
+    try
+      {
+        value = prm.get_integer(entry);
+      }
+    catch (const dealii::ExceptionBase &)
+      {
+        throw InputError(name(entry) + " = " + in_quotes(prm.get(entry)) + " is outside the allowed range " +
+                         range);
+      }
+    require(value >= lo && value <= hi, entry, value, range);
+  }
+
+  void Entries::numbers(const std::string &entry, std::vector<double> &values,
+                        const std::vector<double> &defaults, const Range &range,
+                        const std::string &documentation)
+  {
+    if (!reading_)
+      {
+        std::vector<std::string> texts;
+        for (const double x : defaults)
+          texts.push_back(shortest(x));
+        prm.declare_entry(entry, joined(texts, ", "), Patterns::List(Patterns::Double(), 1),
+                          documented(documentation, "a list of numbers in " + range.text));
+        return;
+      }
+    values.clear();
+    for (const std::string &item : dealii::Utilities::split_string_list(prm.get(entry)))
+      {
+        double x;
+        try
+          {
+            x = dealii::Utilities::string_to_double(item);
+          }
+        catch (const dealii::ExceptionBase &)
+          {
+            throw InputError(name(entry) + " = " + in_quotes(item) + " is outside the allowed range " +
+                             range.text);
+          }
+        require(range.contains(x), entry, x, range.text);
+        values.push_back(x);
+      }
+  }
+
+  void Entries::flag(const std::string &entry, bool &value, const bool default_value,
+                     const std::string &documentation)
+  {
+    if (!reading_)
+      prm.declare_entry(entry, default_value ? "true" : "false", Patterns::Bool(), documentation);
+    else
+      value = prm.get_bool(entry);
+  }
+
+  void Entries::choice_entry(const std::string &entry, std::string &value, const std::string &default_value,
+                             const std::vector<std::string> &options, const std::string &documentation)
+  {
+    if (!reading_)
+      prm.declare_entry(entry, default_value, Patterns::Selection(joined(options, "|")), documentation);
+    else
+      value = prm.get(entry);
+  }
+
+  void Entries::text(const std::string &entry, std::string &value, const std::string &default_value,
+                     const std::string &documentation)
+  {
+    if (!reading_)
+      prm.declare_entry(entry, default_value, Patterns::Anything(), documentation);
+    else
+      value = prm.get(entry);
+  }
+
+  void Entries::file(const std::string &entry, std::string &value, const std::string &default_value,
+                     const std::string &documentation)
+  {
+    if (!reading_)
+      {
+        prm.declare_entry(entry, default_value, Patterns::FileName(), documentation);
+        return;
+      }
+    value = prm.get(entry);
+    if (std::filesystem::path(value).is_relative())
+      value = (std::filesystem::path(folder) / value).lexically_normal().string();
+  }
+
+  void Entries::require(const bool ok, const std::string &entry, const double value,
+                        const std::string &range) const
+  {
+    if (reading_)
+      penny::require(ok, name(entry), value, range);
+  }
+
+  Sections::Sections(ParameterHandler &prm, const bool reading, std::string folder)
+      : prm(prm), reading_(reading), folder(std::move(folder))
+  {
+  }
+
+  void Sections::subsection(const std::string &subsection, const std::function<void(Entries &)> &list)
+  {
+    prm.enter_subsection(subsection);
+    Entries entries(prm, subsection, reading_, folder);
+    try
+      {
+        list(entries);
+      }
+    catch (...)
+      {
+        prm.leave_subsection();
+        throw;
+      }
+    prm.leave_subsection();
+  }
+
+  void Sections::require(const bool ok, const std::string &entry, const double value,
+                         const std::string &range) const
+  {
+    if (reading_)
+      penny::require(ok, entry, value, range);
+  }
+
+  void Sections::check(const std::function<void()> &check) const
+  {
+    if (reading_)
+      check();
+  }
+} // namespace penny

@@ -1,0 +1,125 @@
+#include "input/json_xml_entries.h"
+
+#include "input/input_error.h"
+
+#include <deal.II/base/exceptions.h>
+
+#include <boost/property_tree/json_parser.hpp>
+#include <boost/property_tree/xml_parser.hpp>
+
+#include <cctype>
+#include <filesystem>
+#include <set>
+#include <vector>
+
+namespace penny
+{
+  using dealii::ParameterHandler;
+
+  namespace
+  {
+    // deal.II writes names in XML (and may in JSON) with every character
+    // other than a letter or digit as _XX, its code in hex.
+    std::string demangled(const std::string &name)
+    {
+      std::string plain;
+      for (std::size_t i = 0; i < name.size(); ++i)
+        if (name[i] == '_' && i + 2 < name.size() && std::isxdigit(static_cast<unsigned char>(name[i + 1])) &&
+            std::isxdigit(static_cast<unsigned char>(name[i + 2])))
+          {
+            plain += static_cast<char>(std::stoi(name.substr(i + 1, 2), nullptr, 16));
+            i += 2;
+          }
+        else
+          plain += name[i];
+      return plain;
+    }
+
+    // An entry's value: the text of a leaf, or the 'value' of deal.II's own
+    // format (which also records defaults and documentation).
+    std::string value_of(const boost::property_tree::ptree &node)
+    {
+      return node.empty() ? node.data() : node.get<std::string>("value");
+    }
+
+    void set_entries(ParameterHandler &prm, const boost::property_tree::ptree &node,
+                     const std::vector<std::string> &path, const std::string &scene)
+    {
+      std::set<std::string> seen;
+      for (const auto &[key, child] : node)
+        {
+          const std::string name = demangled(key);
+          std::string       full;
+          for (const std::string &subsection : path)
+            full += subsection + "/";
+          full += name;
+          if (!seen.insert(name).second)
+            throw InputError(full + " appears twice; set each entry once");
+          if (!child.empty() && !child.get_child_optional("value"))
+            {
+              std::vector<std::string> subsection_path = path;
+              subsection_path.push_back(name);
+              if (!prm.subsection_path_exists(subsection_path))
+                throw InputError("subsection '" + full + "' is not read by Scene = " + scene +
+                                 " ('penny --print-parameters " + scene + "' lists what it reads)");
+              set_entries(prm, child, subsection_path, scene);
+              continue;
+            }
+          const std::string value = value_of(child);
+          for (const std::string &subsection : path)
+            prm.enter_subsection(subsection);
+          try
+            {
+              prm.set(name, value);
+            }
+          catch (const ParameterHandler::ExcEntryUndeclared &)
+            {
+              throw InputError(full + " is not an entry of Scene = " + scene +
+                               " ('penny --print-parameters " + scene + "' lists them)");
+            }
+          catch (const dealii::ExceptionBase &exception)
+            {
+              throw InputError(full + " = " + in_quotes(value) + ": " + one_line(exception));
+            }
+          for (std::size_t i = 0; i < path.size(); ++i)
+            prm.leave_subsection();
+        }
+    }
+  } // namespace
+
+  boost::property_tree::ptree read_json_xml_tree(const std::string &filename)
+  {
+    const std::string           extension = std::filesystem::path(filename).extension();
+    boost::property_tree::ptree tree;
+    try
+      {
+        if (extension == ".json")
+          boost::property_tree::read_json(filename, tree);
+        else
+          {
+            boost::property_tree::read_xml(filename, tree);
+            tree = tree.get_child("ParameterHandler");
+          }
+      }
+    catch (const boost::property_tree::ptree_error &error)
+      {
+        throw InputError("parameter file " + in_quotes(filename) + " is not valid " + extension.substr(1) +
+                         ": " + one_line(error.what()));
+      }
+    return tree;
+  }
+
+  std::string scene_of(const boost::property_tree::ptree &tree)
+  {
+    for (const auto &[key, child] : tree)
+      if (demangled(key) == "Scene")
+        return value_of(child);
+    return "";
+  }
+
+  void set_json_xml_entries(ParameterHandler &prm, const boost::property_tree::ptree &tree,
+                            const std::string &scene)
+  {
+    set_entries(prm, tree, {}, scene);
+  }
+} // namespace penny

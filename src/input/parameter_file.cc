@@ -1,0 +1,70 @@
+#include "input/parameter_file.h"
+
+#include "input/input_error.h"
+#include "input/json_xml_entries.h"
+#include "input/prm_statements.h"
+
+#include <deal.II/base/exceptions.h>
+
+#include <filesystem>
+#include <regex>
+#include <typeinfo>
+
+namespace penny
+{
+  using dealii::ParameterHandler;
+
+  ParameterFile read_parameter_file(const std::string &filename)
+  {
+    if (!std::filesystem::is_regular_file(filename))
+      throw InputError("parameter file " + in_quotes(filename) + " does not exist or is not a file");
+    const std::string extension = std::filesystem::path(filename).extension();
+    ParameterFile     file{filename, "", {filename}, {}};
+    bool              sets_any = false;
+    if (extension == ".prm")
+      {
+        const PrmStatements statements = scan_prm_statements(filename);
+        file.files                     = statements.files;
+        file.scene                     = statements.scene;
+        sets_any                       = statements.sets_any;
+      }
+    else if (extension == ".json" || extension == ".xml")
+      {
+        file.tree  = read_json_xml_tree(filename);
+        file.scene = scene_of(file.tree);
+        sets_any   = !file.tree.empty();
+      }
+    else
+      throw InputError("parameter file " + in_quotes(filename) + " is neither .prm, .json nor .xml");
+    // An empty file would run the default scene unasked.
+    if (!sets_any)
+      throw InputError("parameter file " + in_quotes(filename) +
+                       " sets no parameter (add 'set Scene = NAME'; 'penny --help' lists the scenes)");
+    return file;
+  }
+
+  void parse_parameter_file(ParameterHandler &prm, const ParameterFile &file, const std::string &scene)
+  {
+    if (!file.tree.empty())
+      set_json_xml_entries(prm, file.tree, scene);
+    try
+      {
+        prm.parse_input(file.filename);
+      }
+    catch (const dealii::ExceptionBase &exception)
+      {
+        std::string message = one_line(exception);
+        // With only the scene's subsections declared, any other subsection
+        // is one the scene does not read.
+        std::smatch match;
+        if (typeid(exception) == typeid(ParameterHandler::ExcNoSubsection) &&
+            std::regex_search(message, match,
+                              std::regex("Line <([0-9]+)> of file <.*: There is no such "
+                                         "subsection to be entered: (.*)$")))
+          message = "line " + match[1].str() + ": subsection '" + match[2].str() +
+                    "' is not read by Scene = " + scene + " ('penny --print-parameters " + scene +
+                    "' lists what it reads)";
+        throw InputError(message);
+      }
+  }
+} // namespace penny

@@ -1,0 +1,104 @@
+#include "input/prm_statements.h"
+
+#include "input/input_error.h"
+
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <cctype>
+#include <filesystem>
+#include <fstream>
+#include <map>
+
+namespace penny
+{
+  namespace
+  {
+    // One statement of a .prm file: its keyword (set, subsection, end,
+    // include, in any case) and the rest of the line.
+    std::pair<std::string, std::string> statement(const std::string &line)
+    {
+      const std::string trimmed = dealii::Utilities::trim(line);
+      const std::size_t blank   = trimmed.find_first_of(" \t");
+      std::string       keyword = trimmed.substr(0, blank);
+      std::transform(keyword.begin(), keyword.end(), keyword.begin(),
+                     [](const unsigned char ch) { return std::tolower(ch); });
+      return {keyword, blank == std::string::npos ? "" : dealii::Utilities::trim(trimmed.substr(blank))};
+    }
+
+    class StatementScan
+    {
+    public:
+      void scan(const std::string &filename)
+      {
+        const std::string file = std::filesystem::weakly_canonical(filename).string();
+        if (std::find(open_files.begin(), open_files.end(), file) != open_files.end())
+          throw InputError("parameter file " + in_quotes(filename) +
+                           " includes itself (a cycle of include statements)");
+        if (open_files.size() == 16)
+          throw InputError("parameter file " + in_quotes(filename) +
+                           ": include statements nest deeper than 16 files");
+        // A FIFO, a device or a folder would hang, spin or read as empty.
+        if (!std::filesystem::is_regular_file(filename))
+          throw InputError("parameter file " + in_quotes(filename) + " does not exist or is not a file");
+        std::ifstream in(filename);
+        if (!in)
+          throw InputError("parameter file " + in_quotes(filename) + " cannot be read");
+        open_files.push_back(file);
+        result.files.push_back(filename);
+        std::string  line;
+        unsigned int number = 0;
+        while (std::getline(in, line))
+          {
+            const unsigned int first = ++number;
+            // A backslash at the end continues the line.
+            for (std::string next; !line.empty() && line.back() == '\\' && std::getline(in, next); ++number)
+              line = line.substr(0, line.size() - 1) + next;
+            const std::size_t comment = line.find('#');
+            if (comment != std::string::npos)
+              line.erase(comment);
+            const auto [keyword, rest] = statement(line);
+            result.sets_any            = result.sets_any || !keyword.empty();
+            // Lines of an included file name the file.
+            const std::string where =
+                (open_files.size() > 1 ? in_quotes(filename) + ", " : "") + "line " + std::to_string(first);
+            if (keyword == "subsection")
+              path.push_back(rest);
+            else if (keyword == "end" && !path.empty())
+              path.pop_back();
+            else if (keyword == "include")
+              scan(rest);
+            else if (keyword == "set" && rest.find('=') != std::string::npos)
+              {
+                std::string entry;
+                for (const std::string &subsection : path)
+                  entry += subsection + "/";
+                const std::string name = dealii::Utilities::trim(rest.substr(0, rest.find('=')));
+                entry += name;
+                const auto [earlier, first_time] = set_at.emplace(entry, where);
+                if (!first_time)
+                  throw InputError(where + ": " + entry + " is set a second time (first on " +
+                                   earlier->second + "); set each entry once");
+                if (path.empty() && name == "Scene")
+                  result.scene = dealii::Utilities::trim(rest.substr(rest.find('=') + 1));
+              }
+          }
+        open_files.pop_back();
+      }
+
+      PrmStatements result;
+
+    private:
+      std::vector<std::string>           open_files; // the chain of includes being read
+      std::vector<std::string>           path;       // subsections entered
+      std::map<std::string, std::string> set_at;     // entry -> where it was set
+    };
+  } // namespace
+
+  PrmStatements scan_prm_statements(const std::string &filename)
+  {
+    StatementScan scan;
+    scan.scan(filename);
+    return scan.result;
+  }
+} // namespace penny

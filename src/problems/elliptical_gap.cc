@@ -1,0 +1,202 @@
+#include "problems/elliptical_gap.h"
+
+#include "closed_forms/elliptical_crack.h"
+#include "fracture/front_stress_intensity.h"
+#include "numerics/relative_error.h"
+#include "output/elliptical_fields.h"
+#include "problems/fe_sections.h"
+#include "problems/penny_gap.h"
+#include "problems/solid.h"
+
+#include <deal.II/base/mpi.h>
+#include <deal.II/base/utilities.h>
+
+#include <algorithm>
+#include <iostream>
+#include <limits>
+#include <sstream>
+
+namespace penny
+{
+  using namespace dealii;
+
+  namespace
+  {
+    // Sum over the ranks of the peak resident set size (MB).
+    double peak_memory(MPI_Comm communicator)
+    {
+      Utilities::System::MemoryStats stats;
+      Utilities::System::get_memory_stats(stats);
+      return Utilities::MPI::sum(static_cast<double>(stats.VmHWM), communicator) / 1024;
+    }
+
+    // K_I of the circle of radius a under the pressure p from the
+    // axisymmetric model at its defaults, in a cylinder of radius R and height H.
+    double axisymmetric_stress_intensity_factor(const EllipticalModel &settings, const EllipticalGap &gap)
+    {
+      auto model                   = default_values<PennyGapModelParameters>(penny_gap_model_sections);
+      model.material               = settings.model.material;
+      model.geometry.gap_radius    = gap.semi_axis_a;
+      model.geometry.domain_radius = settings.model.mesh.domain_width * gap.semi_axis_a;
+      model.geometry.domain_height = settings.model.mesh.domain_height * gap.semi_axis_a;
+      const auto rings =
+          default_values<std::vector<double>>([&](Sections &sections, std::vector<double> &radii) {
+            ring_section(sections, radii, model.geometry);
+          });
+      const LoadParameters load{LoadParameters::Type::uniform, gap.pressure, 1, "", 1};
+      TimerOutput          timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
+      return solve_penny_gap(model, load, rings, timer).rings.back().signed_stress_intensity_factor;
+    }
+  } // namespace
+
+  EllipticalGapModelParameters EllipticalModel::with_semi_axes(const double a, const double b) const
+  {
+    EllipticalGapModelParameters shaped = model;
+    shaped.mesh.semi_axis_a             = a;
+    shaped.mesh.semi_axis_b             = b;
+    return shaped;
+  }
+
+  void elliptical_model_sections(Sections &sections, EllipticalModel &model)
+  {
+    auto &mesh = model.model.mesh;
+    material_section(sections, model.model.material);
+    sections.subsection("Elliptical model", [&](Entries &entries) {
+      const double infinity = std::numeric_limits<double>::infinity();
+      entries.number("Box width R/a", mesh.domain_width, 40, interval("[)", 2.8, infinity),
+                     "The quarter model reaches x = R and y = R; free there. Units: a.");
+      entries.number("Box height H/a", mesh.domain_height, 40, interval("[)", 2.8, infinity),
+                     "The model reaches z = H; free there (at 20 instead of 40 K_I of the circle moves by "
+                     "1e-4). Units: a.");
+      entries.integer(
+          "Cells along front", mesh.cells_along_front, 16u, 2u, 256u,
+          "Edges of the quarter front 0 <= phi <= pi/2, evenly spaced in the parametric angle phi; "
+          "even. Units: none.");
+      entries.require(mesh.cells_along_front % 2 == 0, "Cells along front", mesh.cells_along_front,
+                      "{2, 4, 6, ..., 256}");
+      entries.integer("Sectors around front", mesh.cells_around_front, 8u, 4u, 64u,
+                      "Sectors of the half-plane around the front in every normal plane; a multiple of 4. "
+                      "Units: none.");
+      entries.require(mesh.cells_around_front % 4 == 0, "Sectors around front", mesh.cells_around_front,
+                      "{4, 8, 12, ..., 64}");
+      entries.number(
+          "Front cell size", mesh.front_cell_size, 1e-3, interval("()", 0, 0.33),
+          "Radius of the innermost ring of cells around the front (a across the front at phi = 0, b "
+          "at pi/2). Units: b.");
+      entries.number("Ring ratio", mesh.ring_ratio, 1.6, interval("(]", 1, 4),
+                     "Nominal ratio of successive ring radii around the front. Units: none.");
+      entries.integer(
+          "Global refinements", model.model.global_refinements, 0u, 0u, 3u,
+          "Uniform refinements of the graded coarse mesh (each multiplies the DoFs by about 8); new "
+          "front points lie on the ellipse. Units: none.");
+      entries.number(
+          "Front weight half-width", model.weight_half_width, 2, interval("()", 0, infinity),
+          "Half-width of the weight along the front of each domain integral, in front cells of the "
+          "refined mesh; up to Cells along front x 2^Global refinements. Units: front cells.");
+      entries.require(model.weight_half_width <= (mesh.cells_along_front << model.model.global_refinements),
+                      "Front weight half-width", model.weight_half_width,
+                      "(0, Cells along front x 2^Global refinements]");
+      entries.numbers("Ring radii", model.ring_radii, {0.1, 0.2, 0.4}, interval("()", 0, 1),
+                      "Radii rho of the J-integral tubes around the front, q = (1 - (d/rho)^2)^4 across it; "
+                      "below the smallest radius of curvature b^2/a of the front. Units: b^2/a.");
+    });
+    finite_element_section(sections, model.model.degree, nullptr);
+    linear_solver_section(sections, model.model.linear_solver);
+  }
+
+  void elliptical_gap_section(Sections &sections, EllipticalGap &gap)
+  {
+    sections.subsection("Elliptical gap", [&](Entries &entries) {
+      entries.number("Semi-axis a", gap.semi_axis_a, 1, magnitude("m"),
+                     "The larger semi-axis of the gap x^2/a^2 + y^2/b^2 < 1 on z = 0, along x. Units: m.");
+      entries.number("Aspect ratio b/a", gap.aspect_ratio, 0.5, interval("(]", 0, 1),
+                     "The smaller semi-axis b along y over a. Units: none.");
+      entries.number("Pressure p", gap.pressure, 1e6, signed_magnitude("Pa"),
+                     "Uniform normal traction opening the gap faces. Units: Pa.");
+      entries.require(gap.pressure != 0, "Pressure p", gap.pressure,
+                      "|p| in [1e-30, 1e30] Pa: a zero load opens nothing");
+      entries.integer("Front points", gap.front_points, 17u, 2u, 1000u,
+                      "K_I is reported at phi = i pi/(2 (n - 1)), i = 0 ... n - 1, one domain integral each. "
+                      "Units: none.");
+    });
+  }
+
+  std::string ring_name(const double rho)
+  {
+    std::ostringstream name;
+    name << "ring " << rho << " b^2/a";
+    return name.str();
+  }
+
+  EllipticalGapMeasurement measure_elliptical_gap(const EllipticalModel &settings, const EllipticalGap &gap,
+                                                  TimerOutput &timer, std::ostream &log,
+                                                  const ResultFolder *fields)
+  {
+    log << "Building the quarter model of the gap b/a = " << gap.aspect_ratio << "...\n" << std::flush;
+    EllipticalGapModel model(settings.with_semi_axes(gap.semi_axis_a, gap.aspect_ratio * gap.semi_axis_a),
+                             timer);
+    const auto        &system = model.get_system();
+    log << system.get_triangulation().n_global_active_cells() << " cells, "
+        << system.get_dof_handler().n_dofs() << " DoFs, " << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
+        << " MPI rank(s); solving...\n"
+        << std::flush;
+    const double                       p        = gap.pressure;
+    const EllipticalGapModel::Traction pressure = [p](const Point<3> &) { return p; };
+    const DisplacementVector           u        = model.solve(pressure);
+
+    EllipticalGapMeasurement solved;
+    solved.angles     = front_point_angles(gap.front_points);
+    solved.ring_radii = settings.ring_radii;
+    {
+      TimerOutput::Scope scope(timer, "J-integral");
+      log << "K_I at " << solved.angles.size() << " front points on " << solved.ring_radii.size()
+          << " ring(s)...\n"
+          << std::flush;
+      // The signed K_I takes the unit pressure as reference; by linearity its
+      // displacement is u/p, no second solve.
+      DisplacementVector u_unit = u;
+      u_unit /= p;
+      const EllipticalGapModel::Traction unit = [](const Point<3> &) { return 1.; };
+      const FrontStressIntensity front(model, solved.angles, settings.weight_half_width, solved.ring_radii);
+      solved.signed_sifs = front.signed_sifs({{&u, &pressure}}, u_unit, unit).front();
+    }
+    const double               e_prime = model.material().plane_strain_modulus();
+    const GreenSneddonSolution exact(model.front().semi_axis_a(), model.front().semi_axis_b(), p, e_prime);
+    solved.largest_error = 0;
+    for (const double phi : solved.angles)
+      solved.exact_sifs.push_back(exact.stress_intensity_factor(phi));
+    for (const auto &ring : solved.signed_sifs)
+      for (unsigned int i = 0; i < ring.size(); ++i)
+        solved.largest_error = std::max(solved.largest_error, relative_error(ring[i], solved.exact_sifs[i]));
+    if (gap.aspect_ratio == 1)
+      {
+        TimerOutput::Scope scope(timer, "axisymmetric model");
+        log << "The circle: K_I of the axisymmetric model...\n" << std::flush;
+        solved.axisymmetric_sifs.assign(solved.angles.size(),
+                                        axisymmetric_stress_intensity_factor(settings, gap));
+      }
+    solved.opening_at_centre       = model.opening_at_centre(u);
+    solved.exact_opening_at_centre = exact.opening(0, 0);
+    solved.gap_volume              = model.gap_volume(u);
+    solved.exact_gap_volume        = exact.gap_volume();
+    solved.n_cells                 = system.get_triangulation().n_global_active_cells();
+    solved.n_dofs                  = system.get_dof_handler().n_dofs();
+    solved.iterations              = system.last_solve().iterations;
+    solved.relative_residual       = system.last_solve().relative_residual;
+    solved.solver                  = system.solver_name();
+
+    if (fields)
+      {
+        TimerOutput::Scope    scope(timer, "output");
+        std::vector<Point<3>> points;
+        for (const double phi : solved.angles)
+          points.push_back(model.front().point(phi));
+        FrontData data = {{"K_I exact", solved.exact_sifs}};
+        for (unsigned int r = 0; r < solved.ring_radii.size(); ++r)
+          data.emplace_back("K_I FE " + ring_name(solved.ring_radii[r]), solved.signed_sifs[r]);
+        write_elliptical_fields(system, u, points, data, *fields);
+      }
+    solved.peak_memory = peak_memory(MPI_COMM_WORLD);
+    return solved;
+  }
+} // namespace penny

@@ -1,0 +1,74 @@
+// The periodic-gap problem of Johnson's sinusoid (doc/theory.md, section 6):
+// the subsections its model and its Bueckner tension are read from, the
+// solve-and-measure routine of one gap, and the set-up of the scenes that
+// search over the gap's half-width.
+#pragma once
+
+#include "fe/periodic_gap_model.h"
+#include "input/entries.h"
+#include "output/table.h"
+#include "problems/penny_gap.h"
+#include "searches/gap_family.h"
+
+#include <deal.II/base/timer.h>
+
+#include <string>
+#include <vector>
+
+namespace penny
+{
+  // Material, Periodic gap (the wavelength, depth, mesh and J-integral
+  // rings, in units of min(c, lambda/2 - c)), Finite element and Linear
+  // solver. The gap half-width is left to the scene.
+  void periodic_gap_model_sections(Sections &sections, PeriodicGapModelParameters &model,
+                                   std::vector<double> &ring_radii);
+
+  // One gap and its Bueckner tension t = p* cos(2 pi x/lambda) - p_bar.
+  struct GapAndLoad
+  {
+    double gap_ratio;    // c/lambda, in (0, 1/2)
+    double peak_tension; // p* (Pa)
+    double load_ratio;   // p_bar/p*
+  };
+
+  // Gap and load.
+  void gap_and_load_section(Sections &sections, GapAndLoad &gap);
+
+  struct PeriodicGapMeasurement
+  {
+    std::vector<RingResult> rings; // radii in units of min(c, lambda/2 - c)
+    double                  exact_stress_intensity_factor;
+    // The unit tensions cos(2 pi x/lambda) Pa and 1 Pa on the last ring (Pa m^1/2).
+    double       cosine_sif, exact_cosine_sif;
+    double       uniform_sif, exact_uniform_sif;
+    unsigned int n_cells;
+    unsigned int n_dofs;
+    double       relative_residual; // the largest of the three solves
+    std::string  solver;
+  };
+
+  // One factorisation, three right-hand sides: the load, the unit cosine and
+  // the unit uniform tension (the reference of the signed K_I).
+  PeriodicGapMeasurement solve_periodic_gap(const PeriodicGapModelParameters &model,
+                                            const BuecknerTension            &load,
+                                            const std::vector<double>        &ring_radii,
+                                            dealii::TimerOutput              &timer);
+
+  // What the scenes that search over the half-width share: a timer of the
+  // phases and the family of models (J on the ring `ring_radius`). Every
+  // model lives on one rank; a search of its own shares its models out over
+  // all ranks, and a sweep of independent searches gives each rank its share
+  // of them, each search on its rank alone.
+  struct PeriodicGapSearch
+  {
+    PeriodicGapSearch(const PeriodicGapModelParameters &model, double ring_radius);
+    PeriodicGapSearch(const PeriodicGapSearch &) = delete;
+
+    // The closing rows of a search's summary: the FE solves of all ranks and
+    // the phase times (collective).
+    void add_cost(Table &summary) const;
+
+    dealii::TimerOutput timer;
+    PeriodicGapFamily   gaps;
+  };
+} // namespace penny

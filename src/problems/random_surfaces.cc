@@ -1,0 +1,58 @@
+#include "problems/random_surfaces.h"
+
+#include "input/input_error.h"
+
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+namespace penny
+{
+  void random_surfaces_section(Sections &sections, RandomSurfaceParameters &surfaces)
+  {
+    sections.subsection("Random surfaces", [&](Entries &entries) {
+      entries.integer("Grid points per side", surfaces.n_points, 256u, 8u, 65536u,
+                      "N of the periodic N x N grid; even. Units: none.");
+      entries.require(surfaces.n_points % 2 == 0, "Grid points per side", surfaces.n_points,
+                      "even numbers 8 ... 65536");
+      entries.number(
+          "Period L/lambda0", surfaces.period, 1, interval("[)", 1, std::numeric_limits<double>::infinity()),
+          "Side of the periodic square in units of the longest wavelength lambda0 = 2 pi/q0 "
+          "(Roughness). The shortest wavelength lambda0/zeta must span at least 4 grid points. Units: "
+          "none.");
+      entries.integer("Realisations", surfaces.n_realisations, 16u, 1u, 1000000u,
+                      "Independent surfaces, spread over the MPI ranks. Units: none.");
+      entries.integer(
+          "Seed", surfaces.seed, std::uint64_t(1), std::uint64_t(0),
+          std::uint64_t(std::numeric_limits<long long>::max()),
+          "Realisation k uses the seed realisation_seed(Seed, k): the same surfaces on any number of "
+          "ranks. Units: none.");
+    });
+  }
+
+  PeriodicGrid surface_grid(const RandomSurfaceParameters &surfaces, const PowerSpectrum &spectrum)
+  {
+    const double q0 = spectrum.wavenumbers.front(), zeta = spectrum.wavenumbers.back() / q0;
+    const double points_per_shortest_wavelength = surfaces.n_points / (surfaces.period * zeta);
+    if (points_per_shortest_wavelength < 4)
+      {
+        std::ostringstream message;
+        message << "Random surfaces/Grid points per side = " << surfaces.n_points << " leaves "
+                << points_per_shortest_wavelength
+                << " points per shortest wavelength lambda0/zeta; at least 4 are needed";
+        throw InputError(message.str());
+      }
+    return square_grid(surfaces.n_points, surfaces.period * 2 * M_PI / q0);
+  }
+
+  Estimate mean_over(const std::vector<std::vector<double>> &rows, const std::size_t column)
+  {
+    const double n    = rows.size();
+    double       mean = 0, square = 0;
+    for (const auto &row : rows)
+      mean += row[column] / n;
+    for (const auto &row : rows)
+      square += std::pow(row[column] - mean, 2);
+    return {mean, n > 1 ? std::sqrt(square / (n - 1) / n) : 0.};
+  }
+} // namespace penny

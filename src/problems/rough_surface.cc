@@ -1,0 +1,132 @@
+#include "problems/rough_surface.h"
+
+#include "input/input_error.h"
+#include "problems/solid.h"
+
+#include <cmath>
+#include <filesystem>
+#include <limits>
+
+namespace penny
+{
+  void roughness_section(Sections &sections, RoughnessParameters &roughness)
+  {
+    using Spectrum = RoughnessParameters::Spectrum;
+    sections.subsection("Roughness", [&](Entries &entries) {
+      const double infinity = std::numeric_limits<double>::infinity();
+      entries.choice(
+          "Spectrum", roughness.spectrum, Spectrum::power_law,
+          EnumNames<Spectrum>{{"power-law", Spectrum::power_law}, {"file", Spectrum::file}},
+          "Isotropic height PSD C(q): the paper's power law (H/2pi) (h0/q0)^2 (q/q0)^(-2(H+1)) on q0 "
+          "<= q <= zeta q0, or the table in 'Spectrum file'.");
+      entries.number("Hurst exponent H", roughness.hurst, 0.75, interval("()", 0, 1), "Units: none.");
+      entries.number("Long-wavelength cut-off q0", roughness.q0, 6283.185307179586,
+                     interval("()", 0, infinity),
+                     "Smallest wavenumber of the power law, q0 = 2 pi/lambda0. Units: 1/m.");
+      entries.number("Magnification zeta", roughness.zeta, 1000, interval("()", 1, infinity),
+                     "q1/q0, the bandwidth of the power law. Units: none.");
+      bool from_ratio = true;
+      entries.choice("Amplitude given by", from_ratio, true,
+                     EnumNames<bool>{{"h0/lambda0", true}, {"rms height", false}},
+                     "h0/lambda0: h0 = (h0/lambda0) 2 pi/q0; rms height: h0 such that sqrt(m0) is the 'Rms "
+                     "height'.");
+      double ratio = 0, rms = 0;
+      entries.number("Amplitude h0/lambda0", ratio, 0.01, interval("()", 0, infinity), "Units: none.");
+      entries.number("Rms height", rms, 1e-6, interval("()", 0, infinity),
+                     "sqrt(m0) of the power law. Units: m.");
+      // m0 = h0^2 (1 - zeta^(-2H))/2 for the power law.
+      roughness.amplitude = from_ratio
+                                ? ratio * 2 * M_PI / roughness.q0
+                                : rms * std::sqrt(2 / (1 - std::pow(roughness.zeta, -2 * roughness.hurst)));
+      entries.file(
+          "Spectrum file", roughness.spectrum_file, "psd.txt",
+          "Two columns q (1/m, increasing) and C(q) (m^4), '#' comments; log-log linear between rows "
+          "(relative paths start at the parameter file's folder).");
+    });
+    sections.check([&] {
+      if (roughness.spectrum == Spectrum::file && !std::filesystem::is_regular_file(roughness.spectrum_file))
+        throw InputError("Roughness/Spectrum file = " + in_quotes(roughness.spectrum_file) +
+                         " does not exist (expected two columns q (1/m), C(q) (m^4))");
+    });
+  }
+
+  PowerSpectrum power_spectrum(const RoughnessParameters &roughness)
+  {
+    if (roughness.spectrum == RoughnessParameters::Spectrum::power_law)
+      return power_law_spectrum(roughness.hurst, roughness.q0, roughness.zeta, roughness.amplitude);
+    try
+      {
+        return read_power_spectrum(roughness.spectrum_file);
+      }
+    catch (const InputError &error)
+      {
+        throw InputError("Roughness/Spectrum file = " + std::string(error.what()));
+      }
+  }
+
+  double AreaLoadParameters::mean_pressure(const unsigned int i) const
+  {
+    return smallest_mean_pressure + i * (largest_mean_pressure - smallest_mean_pressure) / (n_points - 1);
+  }
+
+  void area_load_section(Sections &sections, AreaLoadParameters &area_load)
+  {
+    sections.subsection("Area-load", [&](Entries &entries) {
+      entries.choice(
+          "Convention", area_load.convention_is_paper, true,
+          EnumNames<bool>{{"paper", true}, {"consistent", false}},
+          "paper: the paper's normalisations, prefactor 3 pi R_p eta sqrt(V) = sqrt(2 pi) and "
+          "p0/sqrt(V) = zeta^theta, theta = (2/5)(2H - 1). consistent: V, eta, R_p and p0 from the "
+          "moments of the Roughness spectrum (each H and zeta below replacing its own), the Material "
+          "and the Adhesion sections.");
+      // Near full contact the gaps are isolated for p_bar of a few sqrt(V);
+      // far beyond, the laws underflow to 0 or overflow.
+      entries.number("Smallest mean pressure", area_load.smallest_mean_pressure, 0,
+                     interval("[]", -100, 100, "sqrt(V)"),
+                     "First p_bar/sqrt(V) of the curves (compression positive). Units: sqrt(V).");
+      entries.number("Largest mean pressure", area_load.largest_mean_pressure, 3,
+                     interval("[]", -100, 100, "sqrt(V)"), "Last p_bar/sqrt(V). Units: sqrt(V).");
+      entries.require(area_load.largest_mean_pressure > area_load.smallest_mean_pressure,
+                      "Largest mean pressure", area_load.largest_mean_pressure,
+                      "(Smallest mean pressure, 100] sqrt(V)");
+      entries.integer(
+          "Number of points", area_load.n_points, 61u, 2u, 100000u,
+          "Points of every curve, evenly spaced: mean pressures, or p0/sqrt(V) in zero-load-gap-area. "
+          "Units: none.");
+      entries.numbers("Hurst exponents", area_load.hurst_exponents, {0.75, 0.5, 0.25}, interval("()", 0, 1),
+                      "area-load: one panel per H; magnification-scaling: one fit per H. Units: none.");
+      // Beyond 1e30 the spectral moments leave the range of a double.
+      entries.numbers("Magnifications", area_load.magnifications, {1, 10, 100, 1000, 10000},
+                      interval("[]", 1, 1e30),
+                      "area-load: one curve per zeta (above 1 in the consistent convention). Units: none.");
+      if (!area_load.convention_is_paper)
+        for (const double zeta : area_load.magnifications)
+          entries.require(zeta > 1, "Magnifications", zeta, "(1, 1e30] in the consistent convention");
+    });
+  }
+
+  GapPopulation RoughSurfaceProblem::population(const double hurst, const double zeta) const
+  {
+    if (area_load.convention_is_paper)
+      return paper_population(hurst, zeta);
+    const auto moments = spectral_moments(power_law_spectrum(hurst, roughness.q0, zeta, roughness.amplitude));
+    return surface_population(
+        pressure_summits(moments, material.plane_strain_modulus(), Convention::consistent),
+        critical_stress_intensity, Convention::consistent);
+  }
+
+  std::string RoughSurfaceProblem::convention_line() const
+  {
+    return area_load.convention_is_paper
+               ? "convention: paper (3 pi R_p eta sqrt(V) = sqrt(2 pi), p0/sqrt(V) = zeta^theta)"
+               : "convention: consistent (V, eta, R_p and p0 from the moments of the Roughness power law)";
+  }
+
+  void rough_surface_sections(Sections &sections, RoughSurfaceProblem &problem)
+  {
+    material_section(sections, problem.material);
+    adhesion_section(sections, problem.critical_stress_intensity, problem.material);
+    roughness_section(sections, problem.roughness);
+    area_load_section(sections, problem.area_load);
+  }
+} // namespace penny

@@ -1,0 +1,59 @@
+// The statistical layer's problem (doc/theory.md, section 4): the subsections
+// of the rough surface (Roughness) and of the area-load curves (Area-load),
+// and the population of gaps a surface of given H and zeta holds, in the
+// paper's convention or the consistent one.
+#pragma once
+
+#include "fe/elasticity.h"
+#include "input/entries.h"
+#include "statistics/contact_area.h"
+#include "statistics/roughness.h"
+
+#include <string>
+#include <vector>
+
+namespace penny
+{
+  // Roughness. Once read, a spectrum file must exist.
+  void roughness_section(Sections &sections, RoughnessParameters &roughness);
+
+  // The spectrum a Roughness subsection describes; throws InputError naming
+  // Roughness/Spectrum file for a file that is not a valid table.
+  PowerSpectrum power_spectrum(const RoughnessParameters &roughness);
+
+  // Area-load curves aggregated over the Gaussian field of pressure summits.
+  struct AreaLoadParameters
+  {
+    bool                convention_is_paper;
+    double              smallest_mean_pressure, largest_mean_pressure; // p_bar/sqrt(V)
+    unsigned int        n_points;
+    std::vector<double> hurst_exponents, magnifications;
+
+    // The i-th of the n_points mean pressures p_bar/sqrt(V).
+    double mean_pressure(unsigned int i) const;
+  };
+
+  // Area-load.
+  void area_load_section(Sections &sections, AreaLoadParameters &area_load);
+
+  // What the statistical scenes read: the surface, its solid, the adhesion
+  // and the curves.
+  struct RoughSurfaceProblem
+  {
+    RoughnessParameters roughness;
+    MaterialParameters  material;
+    double              critical_stress_intensity; // K_Ic (Pa m^1/2)
+    AreaLoadParameters  area_load;
+
+    // The gaps of the power-law surface (H, zeta): the paper's normalised
+    // population, or the consistent one from the moments of the Roughness
+    // spectrum with this H and zeta.
+    GapPopulation population(double hurst, double zeta) const;
+
+    // Which convention the curves use, as a line of the screen output.
+    std::string convention_line() const;
+  };
+
+  // Material, Adhesion, Roughness and Area-load.
+  void rough_surface_sections(Sections &sections, RoughSurfaceProblem &problem);
+} // namespace penny

@@ -1,0 +1,68 @@
+// adhesive-minimum: the minimum over c of the FE peak tension P(c) that holds
+// a gap at K_I = K_Ic, from FE solves alone: psi and c_min. PASS when psi lies
+// within Verification/Tolerance of the closed form; c_min, the place of a
+// minimum, carries the square root of the FE error and is reported, not judged.
+#include "closed_forms/adhesive_gap.h"
+#include "numerics/relative_error.h"
+#include "problems/penny_gap.h"
+#include "problems/solid.h"
+#include "scenes/scene.h"
+#include "searches/gap_searches.h"
+
+namespace penny
+{
+  namespace
+  {
+    class AdhesiveMinimumScene : public Scene
+    {
+    public:
+      void parameters(Sections &sections) override
+      {
+        penny_gap_model_sections(sections, model);
+        summit_section(sections, summit_radius, nullptr);
+        adhesion_section(sections, critical_stress_intensity, model.material);
+        ring_section(sections, ring_radii, model.geometry);
+        tolerance_section(sections, tolerance, "the relative error of psi");
+      }
+
+      std::vector<std::string> input_files() const override { return model_input_files(model); }
+
+      Verdict run(const ResultFolder &results, std::ostream &log) override
+      {
+        PennyGapSearch        search(model, ring_radii.back(), log);
+        const double          R_p     = summit_radius;
+        const double          K_Ic    = critical_stress_intensity;
+        const AdhesiveMinimum minimum = fe_adhesive_minimum(search.gaps, R_p, K_Ic, MPI_COMM_WORLD);
+        const double          psi     = minimum.tension / adhesion_tension(R_p, K_Ic);
+        const double          c_hat   = minimum.gap_radius / adhesion_length(R_p, K_Ic);
+
+        const Table::Format all_digits{16, false}, error_digits{3, true};
+        Table               summary = Table::summary();
+        summary.add_row({"p0 FE (Pa)", Table::Cell(minimum.tension, all_digits)});
+        summary.add_row({"c_min FE (m)", Table::Cell(minimum.gap_radius, all_digits)});
+        summary.add_row({"psi FE", Table::Cell(psi, all_digits)});
+        summary.add_row({"psi exact", Table::Cell(closed_form::psi, all_digits)});
+        summary.add_row({"c_min/(R_p K_Ic)^(2/5) FE", Table::Cell(c_hat, all_digits)});
+        summary.add_row({"c_min/(R_p K_Ic)^(2/5) exact", Table::Cell(closed_form::c_min_factor, all_digits)});
+        summary.add_row(
+            {"psi relative error", Table::Cell(relative_error(psi, closed_form::psi), error_digits)});
+        summary.add_row({"c_min relative error",
+                         Table::Cell(relative_error(c_hat, closed_form::c_min_factor), error_digits)});
+        search.add_cost(summary);
+        log << "Adhesive minimum: min over c of P(c) = [K_Ic + K_2(c)/(2 R_p)] / K_1(c), FE\n";
+        summary.print(log);
+        results.write_csv("adhesive-minimum.csv", summary);
+        return verdict("relative error of psi", relative_error(psi, closed_form::psi), tolerance);
+      }
+
+    private:
+      PennyGapModelParameters model;
+      double                  summit_radius, critical_stress_intensity;
+      std::vector<double>     ring_radii;
+      double                  tolerance;
+    };
+  } // namespace
+
+  PENNY_REGISTER_SCENE(AdhesiveMinimumScene, "adhesive-minimum",
+                       "the minimum over c of the FE peak tension P(c) at K_I = K_Ic: psi and c_min")
+} // namespace penny

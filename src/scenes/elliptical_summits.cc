@@ -1,0 +1,286 @@
+// elliptical-summits: the paper's remark that elliptical gaps "do not change
+// the results significantly", asked of summits P (1 - x^2/Ax^2 - y^2/Ay^2)
+// with two principal radii (doc/theory.md, section 8). For each Ay/Ax: the
+// adhesionless gap (K_I = 0 at both ends of the front) and the adhesive
+// minimum (K_I = K_Ic at both ends, least P: psi), searched with 3D FE models
+// on the discretisation of 'Elliptical model' and on one with half its cells
+// along and around the front (the error estimate), and with Galin's closed
+// form. PASS when b/a, the gap-area ratio and psi lie within
+// Verification/Tolerance of the closed form.
+#include "searches/elliptical_summits.h"
+#include "fracture/front_stress_intensity.h"
+#include "numerics/relative_error.h"
+#include "output/phase_times.h"
+#include "output/progress.h"
+#include "output/table.h"
+#include "problems/elliptical_gap.h"
+#include "scenes/scene.h"
+#include "searches/elliptical_gap_family.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <sstream>
+#include <tuple>
+
+namespace penny
+{
+  namespace
+  {
+    using namespace dealii;
+
+    // The gaps of one summit Ay/Ax by one method (FE or Galin's closed form).
+    struct SummitGaps
+    {
+      AdhesionlessSummitGap adhesionless;
+      AdhesiveSummitGap     adhesive;
+      std::vector<double>
+          adhesionless_front;             // K_I/(P K_uniform) at the front points: 0 if the ellipse is exact
+      std::vector<double> adhesive_front; // K_I/K_Ic at the front points: 1 at both ends
+    };
+
+    struct EllipticalSummitsResults
+    {
+      std::vector<double>     tension_aspect_ratios; // Ay/Ax
+      std::vector<double>     angles;                // front points
+      std::vector<SummitGaps> fe, coarse_fe, exact;  // per Ay/Ax; coarse_fe: cells and sectors halved
+      double                  largest_error;         // of b/a, the area ratio and psi, FE against exact
+      unsigned int            fe_models;
+    };
+
+    const Table::Format ratio_digits{8, false}, estimate_digits{2, true};
+
+    // The searches and the front of the gaps found, by one method: one call
+    // of `sifs` per shape found, along the front from phi = 0 to pi/2.
+    SummitGaps summit_gaps(const EllipticalGapSifs &sifs, const double rho, const std::vector<double> &angles)
+    {
+      SummitGaps   gaps;
+      const double s0     = adhesionless_summit_shape(sifs, rho);
+      const auto   front0 = sifs(s0, angles);
+      gaps.adhesionless   = adhesionless_gap(s0, {{front0.front(), front0.back()}});
+      const double s1     = adhesive_summit_shape(sifs, rho, s0);
+      const auto   front1 = sifs(s1, angles);
+      gaps.adhesive       = adhesive_gap(s1, rho, {{front1.front(), front1.back()}});
+      for (const auto &K : front0)
+        gaps.adhesionless_front.push_back(gaps.adhesionless.relative_sif(K));
+      for (const auto &K : front1)
+        gaps.adhesive_front.push_back(gaps.adhesive.relative_sif(K));
+      return gaps;
+    }
+
+    double largest_magnitude(const std::vector<double> &values)
+    {
+      double largest = 0;
+      for (const double v : values)
+        largest = std::max(largest, std::abs(v));
+      return largest;
+    }
+
+    double spread(const std::vector<double> &values)
+    {
+      return *std::max_element(values.begin(), values.end()) -
+             *std::min_element(values.begin(), values.end());
+    }
+
+    // A quantity of the gaps: its FE value, the closed form, the FE error and
+    // the estimate |FE - coarse FE|, in four columns.
+    struct Quantity
+    {
+      std::string                               name;
+      std::function<double(const SummitGaps &)> of;
+    };
+
+    Table quantity_table(const std::vector<Quantity> &quantities, const EllipticalSummitsResults &solved)
+    {
+      std::vector<Table::Column> columns = {{"Ay/Ax", Table::Format{4, false}}};
+      for (const auto &q : quantities)
+        {
+          columns.push_back({q.name + " FE", ratio_digits});
+          columns.push_back({q.name + " exact", ratio_digits});
+          columns.push_back({q.name + " FE error", estimate_digits});
+          columns.push_back({q.name + " FE error estimate", estimate_digits});
+        }
+      Table table(columns);
+      for (unsigned int k = 0; k < solved.tension_aspect_ratios.size(); ++k)
+        {
+          std::vector<Table::Cell> row = {solved.tension_aspect_ratios[k]};
+          for (const auto &q : quantities)
+            {
+              const double fe = q.of(solved.fe[k]), exact = q.of(solved.exact[k]);
+              row.emplace_back(fe);
+              row.emplace_back(exact);
+              row.emplace_back(fe - exact);
+              row.emplace_back(std::abs(fe - q.of(solved.coarse_fe[k])));
+            }
+          table.add_row(row);
+        }
+      return table;
+    }
+
+    Table summit_front_table(const EllipticalSummitsResults &solved)
+    {
+      Table table({{"Ay/Ax", Table::Format{4, false}},
+                   {"phi (rad)", Table::Format{6, false}},
+                   {"adhesionless K_I/(P K_uniform) FE", estimate_digits},
+                   {"adhesionless K_I/(P K_uniform) exact", estimate_digits},
+                   {"adhesive K_I/K_Ic FE", ratio_digits},
+                   {"adhesive K_I/K_Ic exact", ratio_digits}});
+      for (unsigned int k = 0; k < solved.tension_aspect_ratios.size(); ++k)
+        for (unsigned int i = 0; i < solved.angles.size(); ++i)
+          table.add_row({solved.tension_aspect_ratios[k], solved.angles[i],
+                         solved.fe[k].adhesionless_front[i], solved.exact[k].adhesionless_front[i],
+                         solved.fe[k].adhesive_front[i], solved.exact[k].adhesive_front[i]});
+      return table;
+    }
+    class EllipticalSummitsScene : public Scene
+    {
+    public:
+      void parameters(Sections &sections) override
+      {
+        elliptical_model_sections(sections, model);
+        sections.subsection("Elliptical summits", [&](Entries &entries) {
+          entries.numbers(
+              "Tension aspect ratios Ay/Ax", tension_aspect_ratios, {1, 0.8, 0.5, 0.25},
+              interval("[]", 0.05, 1),
+              "Summits t = P (1 - x^2/Ax^2 - y^2/Ay^2) of principal radii R_1 = Ax^2/(2 P) and R_2 = "
+              "Ay^2/(2 P); for each, the gaps are searched with and without adhesion. Slender summits "
+              "need slender gap models (b/a about 0.14 for Ay/Ax = 0.1, where CG with AMG stalls on "
+              "the default meshes). Units: none.");
+          entries.integer(
+              "Front points", front_points, 9u, 2u, 1000u,
+              "K_I along the front of each gap found, at phi = i pi/(2 (n - 1)), i = 0 ... n - 1. "
+              "Units: none.");
+        });
+        tolerance_section(sections, tolerance,
+                          "the largest relative error of b/a, the gap-area ratio and psi");
+        // The coarse model halves the cells along and around the front.
+        const auto &mesh = model.model.mesh;
+        sections.require(mesh.cells_along_front % 4 == 0, "Elliptical model/Cells along front",
+                         mesh.cells_along_front,
+                         "{4, 8, 12, ..., 256} for this scene (its coarse model halves it)");
+        sections.require(mesh.cells_around_front % 8 == 0, "Elliptical model/Sectors around front",
+                         mesh.cells_around_front,
+                         "{8, 16, 24, ..., 64} for this scene (its coarse model halves it)");
+        sections.require(
+            model.weight_half_width <= (mesh.cells_along_front / 2) << model.model.global_refinements,
+            "Elliptical model/Front weight half-width", model.weight_half_width,
+            "(0, Cells along front x 2^Global refinements/2] for this scene (its coarse model halves "
+            "the cells)");
+      }
+
+      Verdict run(const ResultFolder &results, std::ostream &log) override
+      {
+        TimerOutput                  timer(log, TimerOutput::never, TimerOutput::wall_times);
+        EllipticalGapModelParameters fine   = model.with_semi_axes(1, 1);
+        EllipticalGapModelParameters coarse = fine;
+        coarse.mesh.cells_along_front /= 2;
+        coarse.mesh.cells_around_front /= 2;
+        const double ring = model.ring_radii.back();
+
+        EllipticalSummitsResults solved;
+        solved.tension_aspect_ratios = tension_aspect_ratios;
+        solved.angles                = front_point_angles(front_points);
+        solved.fe_models             = 0;
+        {
+          // First, as it takes milliseconds: a summit the closed form cannot answer stops the scene here.
+          TimerOutput::Scope scope(timer, "closed form");
+          for (const double ratio : solved.tension_aspect_ratios)
+            solved.exact.push_back(summit_gaps(galin_unit_load_sifs, ratio, solved.angles));
+        }
+        Progress progress(log, "3D models");
+        for (const auto &[discretisation, name, gaps] :
+             {std::tuple{&fine, "FE", &solved.fe}, std::tuple{&coarse, "coarse FE", &solved.coarse_fe}})
+          {
+            EllipticalGapFamily family(*discretisation, model.weight_half_width, ring, timer);
+            double              rho = 0;
+            family.observe([&](const double s) {
+              std::ostringstream state;
+              state << name << ", Ay/Ax = " << rho << ": b/a = " << s;
+              progress.step(state.str());
+            });
+            const EllipticalGapSifs sifs = [&family](const double s, const std::vector<double> &angles) {
+              return family.unit_load_sifs(s, angles);
+            };
+            for (const double ratio : solved.tension_aspect_ratios)
+              {
+                rho = ratio;
+                gaps->push_back(summit_gaps(sifs, ratio, solved.angles));
+              }
+            solved.fe_models += family.n_models();
+          }
+
+        const auto adhesionless = [](const auto member) {
+          return [member](const SummitGaps &g) { return g.adhesionless.*member; };
+        };
+        const auto adhesive = [](const auto member) {
+          return [member](const SummitGaps &g) { return g.adhesive.*member; };
+        };
+        const Table adhesionless_table =
+            quantity_table({{"b/a", adhesionless(&AdhesionlessSummitGap::aspect_ratio)},
+                            {"a/Ax", adhesionless(&AdhesionlessSummitGap::a_over_Ax)},
+                            {"b/Ay", adhesionless(&AdhesionlessSummitGap::b_over_Ay)},
+                            {"gap area/tension area", adhesionless(&AdhesionlessSummitGap::area_ratio)},
+                            {"largest |K_I|/(P K_uniform) on the front",
+                             [](const SummitGaps &g) { return largest_magnitude(g.adhesionless_front); }}},
+                           solved);
+        const Table adhesive_table =
+            quantity_table({{"b/a", adhesive(&AdhesiveSummitGap::aspect_ratio)},
+                            {"a/(R_p K_Ic)^(2/5)", adhesive(&AdhesiveSummitGap::a)},
+                            {"psi", adhesive(&AdhesiveSummitGap::tension)},
+                            {"spread of K_I/K_Ic on the front",
+                             [](const SummitGaps &g) { return spread(g.adhesive_front); }}},
+                           solved);
+        const Table front = summit_front_table(solved);
+
+        solved.largest_error = 0;
+        for (unsigned int k = 0; k < solved.tension_aspect_ratios.size(); ++k)
+          {
+            const SummitGaps &fe = solved.fe[k], &exact = solved.exact[k];
+            solved.largest_error =
+                std::max({solved.largest_error,
+                          relative_error(fe.adhesionless.aspect_ratio, exact.adhesionless.aspect_ratio),
+                          relative_error(fe.adhesionless.area_ratio, exact.adhesionless.area_ratio),
+                          relative_error(fe.adhesive.aspect_ratio, exact.adhesive.aspect_ratio),
+                          relative_error(fe.adhesive.tension, exact.adhesive.tension)});
+          }
+        Table summary = Table::summary();
+        summary.add_row({"3D models solved (3 loads each)", solved.fe_models});
+        summary.add_row({"MPI ranks", Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)});
+        summary.add_row({"largest relative error of b/a, the area ratio and psi",
+                         Table::Cell(solved.largest_error, Table::Format{3, true})});
+        add_phase_times(summary, timer);
+
+        log << "\nWithout adhesion: the gap with K_I = 0 at phi = 0 and pi/2 under P (1 - x^2/Ax^2 - "
+               "y^2/Ay^2)\n";
+        adhesionless_table.print(log);
+        log << "\nWith adhesion (K_Ic = 1, R_p = (R_1 R_2)^(1/2) = 1): the least P with K_I = K_Ic at phi = "
+               "0 "
+               "and "
+               "pi/2, psi = P/(K_Ic^4/R_p)^(1/5)\n";
+        adhesive_table.print(log);
+        log << '\n';
+        summary.print(log);
+        results.write_csv("adhesionless.csv", adhesionless_table);
+        results.write_csv("adhesive.csv", adhesive_table);
+        results.write_csv("front.csv", front);
+        results.write_csv("summary.csv", summary);
+        return verdict("largest relative error of b/a, the gap-area ratio and psi", solved.largest_error,
+                       tolerance);
+      }
+
+    private:
+      EllipticalModel     model;
+      std::vector<double> tension_aspect_ratios;
+      unsigned int        front_points;
+      double              tolerance;
+    };
+  } // namespace
+
+  PENNY_REGISTER_SCENE(
+      EllipticalSummitsScene, "elliptical-summits",
+      "3D FE searches (distributed) for the gaps of summits P (1 - x^2/Ax^2 - y^2/Ay^2): without "
+      "adhesion K_I = 0, with adhesion K_I = K_Ic at the ends of the front at the least P (psi), "
+      "beside Galin's closed form")
+} // namespace penny

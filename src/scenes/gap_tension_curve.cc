@@ -1,0 +1,97 @@
+// gap-tension-curve: p_hat = P/p0 against c_hat = c/c_min from FE (paper
+// Fig. 2), beside (c_hat^2 + 4/sqrt(c_hat))/5 and the paper's linear law. P
+// and c are normalised by the closed-form p0 and c_min so that FE and closed
+// form share one axis. PASS when every p_hat lies within
+// Verification/Tolerance of the closed form.
+#include "closed_forms/adhesive_gap.h"
+#include "numerics/relative_error.h"
+#include "problems/penny_gap.h"
+#include "problems/solid.h"
+#include "scenes/scene.h"
+
+#include <cmath>
+#include <limits>
+
+namespace penny
+{
+  namespace
+  {
+    class GapTensionCurveScene : public Scene
+    {
+    public:
+      void parameters(Sections &sections) override
+      {
+        penny_gap_model_sections(sections, model);
+        summit_section(sections, summit_radius, nullptr);
+        adhesion_section(sections, critical_stress_intensity, model.material);
+        ring_section(sections, ring_radii, model.geometry);
+        sections.subsection("Gap-tension curve", [&](Entries &entries) {
+          const double infinity = std::numeric_limits<double>::infinity();
+          entries.number("Smallest c_hat", smallest_c_hat, 0.3, interval("()", 0, infinity),
+                         "Smallest c/c_min. Units: none.");
+          entries.number("Largest c_hat", largest_c_hat, 4, interval("()", 0, infinity),
+                         "Largest c/c_min. Units: none.");
+          entries.require(largest_c_hat > smallest_c_hat, "Largest c_hat", largest_c_hat,
+                          "(Smallest c_hat, inf)");
+          entries.integer("Number of points", n_points, 24u, 2u, 1000u,
+                          "Points, evenly spaced in c_hat. Units: none.");
+        });
+        tolerance_section(sections, tolerance, "the largest relative error of p_hat");
+      }
+
+      std::vector<std::string> input_files() const override { return model_input_files(model); }
+
+      Verdict run(const ResultFolder &results, std::ostream &log) override
+      {
+        PennyGapSearch search(model, ring_radii.back(), log);
+        const double   R_p   = summit_radius;
+        const double   K_Ic  = critical_stress_intensity;
+        const double   c_min = closed_form::c_min_factor * adhesion_length(R_p, K_Ic);
+        const double   p0    = closed_form::psi * adhesion_tension(R_p, K_Ic);
+
+        const Table::Format digits{12, false};
+        Table               table({{"c_hat", digits},
+                                   {"p_hat FE", digits},
+                                   {"p_hat exact", digits},
+                                   {"p_hat linear", digits},
+                                   {"relative error", digits}});
+        const auto          c_hat_at = [&](const unsigned int i) {
+          return smallest_c_hat + i * (largest_c_hat - smallest_c_hat) / (n_points - 1);
+        };
+        std::vector<double> radii;
+        for (unsigned int i = 0; i < n_points; ++i)
+          radii.push_back(c_hat_at(i) * c_min);
+        const std::vector<PennyUnitSifs> sifs  = search.gaps.unit_load_sifs(radii, MPI_COMM_WORLD);
+        double                           worst = 0;
+        for (unsigned int i = 0; i < n_points; ++i)
+          {
+            const double        c_hat  = c_hat_at(i);
+            const PennyUnitSifs K      = sifs[i];
+            const double        p_fe   = (K_Ic + K.quadratic / (2 * R_p)) / K.uniform / p0;
+            const double        exact  = (c_hat * c_hat + 4 / std::sqrt(c_hat)) / 5;
+            const double        linear = c_hat * c_hat > 2.5 ? c_hat * c_hat / 5 + 0.5 : 1.;
+            worst                      = std::max(worst, relative_error(p_fe, exact));
+            table.add_row({c_hat, p_fe, exact, linear, relative_error(p_fe, exact)});
+          }
+        results.write_csv("gap-tension-curve.csv", table);
+        table.print(log);
+        Table summary = Table::summary();
+        summary.add_row({"largest relative error", Table::Cell(worst, Table::Format{3, true})});
+        search.add_cost(summary);
+        summary.print(log);
+        return verdict("largest relative error of p_hat", worst, tolerance);
+      }
+
+    private:
+      PennyGapModelParameters model;
+      double                  summit_radius, critical_stress_intensity;
+      std::vector<double>     ring_radii;
+      double                  smallest_c_hat, largest_c_hat;
+      unsigned int            n_points;
+      double                  tolerance;
+    };
+  } // namespace
+
+  PENNY_REGISTER_SCENE(GapTensionCurveScene, "gap-tension-curve",
+                       "p_hat(c_hat) from FE beside (c_hat^2 + 4/sqrt(c_hat))/5 (paper Fig. 2)")
+} // namespace penny

@@ -1,0 +1,134 @@
+// jump-into-contact: from FE, the critical alpha of spontaneous full contact
+// at zero load (the maximum over c of K_cosine(c)/sqrt(lambda)), and the
+// jump-into-contact load 1 - p_bar_max/p* against alpha (the FE maximum over c
+// of p_bar/p* at K_I = K_Ic), beside the maximum of Johnson's curve and the
+// small-alpha law 5 (alpha/4)^(4/5). PASS when the relative error of alpha_c
+// and the error of 1 - p_bar_max/p* are within Verification/Tolerance.
+#include "closed_forms/periodic_array.h"
+#include "numerics/relative_error.h"
+#include "parallel/spread_over_ranks.h"
+#include "problems/periodic_gap.h"
+#include "scenes/scene.h"
+#include "searches/periodic_searches.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace penny
+{
+  namespace
+  {
+    const Table::Format all_digits{16, false}, digits{10, true}, error_digits{3, true};
+
+    class JumpIntoContactScene : public Scene
+    {
+    public:
+      void parameters(Sections &sections) override
+      {
+        periodic_gap_model_sections(sections, model, ring_radii);
+        sections.subsection("Jump into contact", [&](Entries &entries) {
+          entries.number("Smallest alpha", smallest_alpha, 1e-4, interval("[)", 1e-8, 0.56), "Units: none.");
+          // Above 0.56 the maximum leaves the search interval.
+          entries.number("Largest alpha", largest_alpha, 0.5,
+                         {"(Smallest alpha, 0.56]", [](double) { return true; }}, "Units: none.");
+          entries.require(largest_alpha > smallest_alpha && largest_alpha <= 0.56, "Largest alpha",
+                          largest_alpha, "(Smallest alpha = " + shortest(smallest_alpha) + ", 0.56]");
+          entries.integer(
+              "Number of alphas", n_alphas, 9u, 1u, 1000u,
+              "alphas evenly spaced in log(alpha) from the smallest to the largest; each is one FE "
+              "maximisation over the contact half-width. Units: none.");
+        });
+        tolerance_section(sections, tolerance,
+                          "the largest of the relative error of alpha_c and the error of 1 - p_bar_max/p*");
+      }
+
+      Verdict run(const ResultFolder &results, std::ostream &log) override
+      {
+        PeriodicGapSearch        search(model, ring_radii.back());
+        const double             lambda   = model.wavelength;
+        const FeCriticalAdhesion critical = fe_critical_alpha(search.gaps, MPI_COMM_WORLD);
+        const double             contact  = critical.contact_half_width / lambda;
+        // The definition checked: at the FE alpha_c the FE maximum of p_bar/p* is zero.
+        const FeLoadExtremum at_critical = fe_jump_into_contact(search.gaps, critical.alpha, MPI_COMM_WORLD);
+
+        Table summary = Table::summary();
+        summary.add_row({"critical alpha FE", Table::Cell(critical.alpha, all_digits)});
+        summary.add_row(
+            {"critical alpha exact, 3^(3/4)/4", Table::Cell(periodic_array::critical_alpha, all_digits)});
+        summary.add_row(
+            {"relative error",
+             Table::Cell(relative_error(critical.alpha, periodic_array::critical_alpha), error_digits)});
+        summary.add_row({"a/lambda at alpha_c FE", Table::Cell(contact, all_digits)});
+        summary.add_row(
+            {"a/lambda at alpha_c exact", Table::Cell(periodic_array::critical_contact_ratio, all_digits)});
+        summary.add_row(
+            {"max p_bar/p* FE at the FE alpha_c", Table::Cell(at_critical.load_ratio, error_digits)});
+        summary.add_row({"FE solves", dealii::Utilities::MPI::sum(search.gaps.n_solves(), MPI_COMM_WORLD)});
+        log << "Critical alpha: the FE maximum over c of K_cosine(c)/sqrt(lambda), where the jump into "
+               "contact "
+               "reaches p_bar = 0 (spontaneous full contact at zero load)\n";
+        summary.print(log);
+        results.write_csv("critical-alpha.csv", summary);
+
+        Table      table({{"alpha", Table::Format{4, true}},
+                          {"a/lambda FE", Table::Format{8, false}},
+                          {"a/lambda Johnson", Table::Format{8, false}},
+                          {"1 - p_bar_max/p* FE", digits},
+                          {"1 - p_bar_max/p* Johnson", digits},
+                          {"absolute error", error_digits},
+                          {"5 (alpha/4)^(4/5)", digits},
+                          {"Johnson/small-alpha law", Table::Format{6, false}}});
+        double     worst = 0;
+        const auto maximum =
+            spread_over_ranks<FeLoadExtremum>(MPI_COMM_WORLD, n_alphas, [&](const unsigned int i) {
+              return fe_jump_into_contact(search.gaps, alpha_at(i), MPI_COMM_SELF);
+            });
+        for (unsigned int i = 0; i < n_alphas; ++i)
+          {
+            const double         alpha = alpha_at(i);
+            const FeLoadExtremum fe    = maximum[i];
+            const auto           exact = periodic_array::jump_into_contact(alpha);
+            const double         law   = periodic_array::small_alpha_jump(alpha);
+            worst                      = std::max(worst, std::abs(fe.load_ratio - exact.load_ratio));
+            table.add_row({alpha, fe.contact_half_width / lambda, exact.contact_ratio, 1 - fe.load_ratio,
+                           1 - exact.load_ratio, std::abs(fe.load_ratio - exact.load_ratio), law,
+                           (1 - exact.load_ratio) / law});
+          }
+        results.write_csv("jump-into-contact.csv", table);
+        log << "\nJump into full contact: 1 - p_bar_max/p* from the FE maximum over c of p_bar/p* at K_I = "
+               "K_Ic, "
+               "beside the maximum of Johnson's curve and the small-alpha law\n";
+        table.print(log);
+        Table cost = Table::summary();
+        cost.add_row({"largest |p_bar_max/p* FE - Johnson|", Table::Cell(worst, error_digits)});
+        search.add_cost(cost);
+        cost.print(log);
+        return verdict("largest of the relative error of alpha_c and the error of 1 - p_bar_max/p*",
+                       std::max(relative_error(critical.alpha, periodic_array::critical_alpha), worst),
+                       tolerance);
+      }
+
+    private:
+      // The i-th of the alphas, evenly spaced in log(alpha).
+      double alpha_at(const unsigned int i) const
+      {
+        if (n_alphas == 1)
+          return smallest_alpha;
+        return smallest_alpha *
+               std::pow(largest_alpha / smallest_alpha, static_cast<double>(i) / (n_alphas - 1));
+      }
+
+      PeriodicGapModelParameters model;
+      std::vector<double>        ring_radii;
+      double                     smallest_alpha, largest_alpha;
+      unsigned int               n_alphas;
+      double                     tolerance;
+    };
+  } // namespace
+
+  PENNY_REGISTER_SCENE(JumpIntoContactScene, "jump-into-contact",
+                       "from FE: the critical alpha of spontaneous full contact at zero load, and the "
+                       "jump-into-contact load 1 - p_bar_max/p* against alpha beside 5 (alpha/4)^(4/5)")
+} // namespace penny

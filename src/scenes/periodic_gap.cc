@@ -1,0 +1,124 @@
+// periodic-gap: one FE solve of a gap of the sinusoid's periodic array (plane
+// strain), K_I from J-integrals and the signed K_I on every ring, beside
+// sqrt(lambda) [p* cos^2(pi c/lambda) - p_bar] sqrt(tan(pi c/lambda)), and
+// the unit cosine and uniform tensions beside theirs. PASS when |K_I| and the
+// signed K_I on every ring lie within Verification/Tolerance of it.
+#include "problems/periodic_gap.h"
+#include "numerics/relative_error.h"
+#include "output/phase_times.h"
+#include "output/table.h"
+#include "scenes/scene.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <algorithm>
+#include <cmath>
+
+namespace penny
+{
+  namespace
+  {
+    using dealii::TimerOutput;
+
+    const Table::Format all_digits{16, false}, digits{10, true}, error_digits{3, true};
+
+    Table ring_table(const PeriodicGapMeasurement &results)
+    {
+      Table        table({{"ring (min(c, lambda/2 - c))", digits},
+                          {"J (J/m^2)", digits},
+                          {"|K_I| FE (Pa m^1/2)", digits},
+                          {"K_I signed FE (Pa m^1/2)", digits},
+                          {"K_I exact (Pa m^1/2)", digits},
+                          {"|K_I| relative error", error_digits},
+                          {"signed K_I relative error", error_digits}});
+      const double exact = results.exact_stress_intensity_factor;
+      for (const auto &ring : results.rings)
+        table.add_row({ring.radius, ring.energy_release_rate, ring.stress_intensity_factor,
+                       ring.signed_stress_intensity_factor, exact,
+                       relative_error(ring.stress_intensity_factor, std::abs(exact)),
+                       relative_error(ring.signed_stress_intensity_factor, exact)});
+      return table;
+    }
+
+    class PeriodicGapScene : public Scene
+    {
+    public:
+      void parameters(Sections &sections) override
+      {
+        periodic_gap_model_sections(sections, model, ring_radii);
+        gap_and_load_section(sections, gap);
+        tolerance_section(sections, tolerance,
+                          "the largest relative error of |K_I| and the signed K_I on every ring");
+      }
+
+      Verdict run(const ResultFolder &results, std::ostream &log) override
+      {
+        TimerOutput timer(log, TimerOutput::never, TimerOutput::wall_times);
+        model.gap_half_width = gap.gap_ratio * model.wavelength;
+        const BuecknerTension load{model.wavelength, gap.peak_tension, gap.load_ratio * gap.peak_tension};
+        const PeriodicGapMeasurement solved = solve_periodic_gap(model, load, ring_radii, timer);
+
+        const Table rings   = ring_table(solved);
+        const Table summary = summary_table(solved, timer);
+        log << "Periodic gap of Johnson's sinusoid (plane strain): K_I beside sqrt(lambda) [p* cos^2(pi "
+               "c/lambda) - "
+               "p_bar] sqrt(tan(pi c/lambda))\n";
+        rings.print(log);
+        if (solved.rings.back().signed_stress_intensity_factor < 0)
+          log << "K_I < 0: the faces would interpenetrate; no open gap of this width carries this load.\n";
+        log << '\n';
+        summary.print(log);
+        results.write_csv("rings.csv", rings);
+        results.write_csv("summary.csv", summary);
+
+        double worst = 0;
+        for (const auto &ring : solved.rings)
+          worst = std::max(
+              {worst,
+               relative_error(ring.stress_intensity_factor, std::abs(solved.exact_stress_intensity_factor)),
+               relative_error(ring.signed_stress_intensity_factor, solved.exact_stress_intensity_factor)});
+        return verdict("largest relative error of K_I", worst, tolerance);
+      }
+
+    private:
+      Table summary_table(const PeriodicGapMeasurement &results, const TimerOutput &timer) const
+      {
+        Table      summary = Table::summary();
+        const auto row     = [&](const std::string &name, const double value, const Table::Format format) {
+          summary.add_row({name, Table::Cell(value, format)});
+        };
+        row("c/lambda", gap.gap_ratio, all_digits);
+        row("contact half-width a/lambda", 0.5 - gap.gap_ratio, all_digits);
+        row("p_bar/p*", gap.load_ratio, all_digits);
+        row("depth D/lambda", model.depth / model.wavelength, all_digits);
+        summary.add_row({"cells", results.n_cells});
+        summary.add_row({"DoFs", results.n_dofs});
+        summary.add_row({"degree", model.degree});
+        summary.add_row({"MPI ranks", dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)});
+        summary.add_row({"solver", results.solver});
+        row("relative residual", results.relative_residual, digits);
+        row("K_I of cos(2 pi x/lambda) Pa FE (Pa m^1/2)", results.cosine_sif, digits);
+        row("K_I of cos(2 pi x/lambda) Pa exact (Pa m^1/2)", results.exact_cosine_sif, digits);
+        row("K_I of cos(2 pi x/lambda) Pa relative error",
+            relative_error(results.cosine_sif, results.exact_cosine_sif), error_digits);
+        row("K_I of 1 Pa uniform FE (Pa m^1/2)", results.uniform_sif, digits);
+        row("K_I of 1 Pa uniform, Koiter (Pa m^1/2)", results.exact_uniform_sif, digits);
+        row("K_I of 1 Pa uniform relative error",
+            relative_error(results.uniform_sif, results.exact_uniform_sif), error_digits);
+        add_phase_times(summary, timer);
+        return summary;
+      }
+
+      PeriodicGapModelParameters model;
+      std::vector<double>        ring_radii;
+      GapAndLoad                 gap;
+      double                     tolerance;
+    };
+  } // namespace
+
+  PENNY_REGISTER_SCENE(
+      PeriodicGapScene, "periodic-gap",
+      "one FE solve of a gap of the sinusoid's periodic array (plane strain): K_I from J-integrals "
+      "and the signed K_I on every ring, beside sqrt(lambda) [p* cos^2(pi c/lambda) - p_bar] "
+      "sqrt(tan(pi c/lambda))")
+} // namespace penny

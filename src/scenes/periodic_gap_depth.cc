@@ -1,0 +1,101 @@
+// periodic-gap-depth: the truncation study of the periodic gap. Each depth D
+// of the solid is a full solve of the scene's gap; the error of the last ring
+// against the closed form of the infinitely deep solid, and those of the unit
+// cosine and uniform tensions.
+#include "numerics/relative_error.h"
+#include "output/phase_times.h"
+#include "output/table.h"
+#include "parallel/spread_over_ranks.h"
+#include "problems/periodic_gap.h"
+#include "scenes/scene.h"
+
+#include <algorithm>
+
+namespace penny
+{
+  namespace
+  {
+    using dealii::TimerOutput;
+
+    class PeriodicGapDepthScene : public Scene
+    {
+    public:
+      void parameters(Sections &sections) override
+      {
+        periodic_gap_model_sections(sections, model, ring_radii);
+        gap_and_load_section(sections, gap);
+        sections.subsection("Depth study", [&](Entries &entries) {
+          entries.numbers(
+              "Depths", depths, {0.25, 0.5, 0.75, 1, 1.5, 2, 3}, interval("(]", 0, 100, "lambda"),
+              "Depths D of the truncated solid, one solve each, in place of 'Periodic gap/Depth D'. "
+              "Units: lambda.");
+          if (!entries.reading())
+            return;
+          const double largest_ring = *std::max_element(ring_radii.begin(), ring_radii.end());
+          for (const double depth : depths)
+            entries.require(largest_ring < 4 * depth, "Depths", depth,
+                            "(largest ring radius/4 = " + shortest(largest_ring / 4) + ", 100] lambda");
+        });
+      }
+
+      Verdict run(const ResultFolder &results, std::ostream &log) override
+      {
+        TimerOutput         timer(log, TimerOutput::never, TimerOutput::wall_times);
+        const Table::Format digits{10, true}, error_digits{3, true};
+        Table               table({{"D/lambda", Table::Format{4, false}},
+                                   {"cells"},
+                                   {"DoFs"},
+                                   {"K_I signed FE (Pa m^1/2)", digits},
+                                   {"K_I exact (Pa m^1/2)", digits},
+                                   {"K_I relative error", error_digits},
+                                   {"K_cosine relative error", error_digits},
+                                   {"K_uniform relative error", error_digits}});
+        // Each depth a model on one rank, the depths spread over the ranks.
+        struct Row
+        {
+          double cells, dofs, signed_sif, exact_sif, error, cosine_error, uniform_error;
+        };
+        const BuecknerTension load{model.wavelength, gap.peak_tension, gap.load_ratio * gap.peak_tension};
+        const auto solved = spread_over_ranks<Row>(MPI_COMM_WORLD, depths.size(), [&](const unsigned int i) {
+          PeriodicGapModelParameters deeper = model;
+          deeper.gap_half_width             = gap.gap_ratio * model.wavelength;
+          deeper.depth                      = depths[i] * model.wavelength;
+          deeper.communicator               = MPI_COMM_SELF;
+          const PeriodicGapMeasurement m    = solve_periodic_gap(deeper, load, ring_radii, timer);
+          const double                 K    = m.rings.back().signed_stress_intensity_factor;
+          return Row{double(m.n_cells),
+                     double(m.n_dofs),
+                     K,
+                     m.exact_stress_intensity_factor,
+                     relative_error(K, m.exact_stress_intensity_factor),
+                     relative_error(m.cosine_sif, m.exact_cosine_sif),
+                     relative_error(m.uniform_sif, m.exact_uniform_sif)};
+        });
+        for (unsigned int i = 0; i < depths.size(); ++i)
+          {
+            const Row &row = solved[i];
+            table.add_row({depths[i], static_cast<unsigned int>(row.cells),
+                           static_cast<unsigned int>(row.dofs), row.signed_sif, row.exact_sif, row.error,
+                           row.cosine_error, row.uniform_error});
+          }
+        log << "Truncation study: K_I of the periodic gap (c/lambda = " << gap.gap_ratio
+            << ", p_bar/p* = " << gap.load_ratio
+            << ", last ring) against the depth D of the solid, free at z = D\n";
+        table.print(log);
+        log << "wall time total (s): " << total_wall_time(timer) << '\n';
+        results.write_csv("depth-study.csv", table);
+        return {};
+      }
+
+    private:
+      PeriodicGapModelParameters model;
+      std::vector<double>        ring_radii;
+      GapAndLoad                 gap;
+      std::vector<double>        depths;
+    };
+  } // namespace
+
+  PENNY_REGISTER_SCENE(
+      PeriodicGapDepthScene, "periodic-gap-depth",
+      "the periodic-gap K_I against the depth D/lambda of the truncated solid: the truncation study")
+} // namespace penny

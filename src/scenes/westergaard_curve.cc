@@ -1,0 +1,86 @@
+// westergaard-curve: the adhesionless sinusoid. At each mean pressure
+// p_bar/p* = i/(n + 1) the contact half-width a is the FE root over the gap's
+// half-width of K_I = 0, beside p_bar/p* = sin^2(pi a/lambda). PASS when
+// |p_bar/p* - sin^2(pi a_FE/lambda)| is within Verification/Tolerance.
+#include "closed_forms/periodic_array.h"
+#include "parallel/spread_over_ranks.h"
+#include "problems/periodic_gap.h"
+#include "scenes/scene.h"
+#include "searches/periodic_searches.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace penny
+{
+  namespace
+  {
+    class WestergaardCurveScene : public Scene
+    {
+    public:
+      void parameters(Sections &sections) override
+      {
+        periodic_gap_model_sections(sections, model, ring_radii);
+        sections.subsection("Westergaard curve", [&](Entries &entries) {
+          entries.integer(
+              "Number of points", n_points, 8u, 1u, 1000u,
+              "Mean pressures p_bar/p* = i/(n + 1), i = 1 ... n; each is one FE root search over the "
+              "contact half-width. Units: none.");
+        });
+        tolerance_section(sections, tolerance, "the largest |p_bar/p* - sin^2(pi a_FE/lambda)|");
+      }
+
+      Verdict run(const ResultFolder &results, std::ostream &log) override
+      {
+        PeriodicGapSearch   search(model, ring_radii.back());
+        const double        lambda = model.wavelength;
+        const Table::Format all_digits{16, false}, digits{10, true}, error_digits{3, true};
+        Table               table({{"p_bar/p*", digits},
+                                   {"a/lambda FE", all_digits},
+                                   {"a/lambda exact", all_digits},
+                                   {"a/lambda error", error_digits},
+                                   {"sin^2(pi a_FE/lambda)", all_digits},
+                                   {"p_bar/p* error", error_digits}});
+        double              worst_load = 0, worst_contact = 0;
+        const auto          load_at = [&](const unsigned int i) { return (i + 1.) / (n_points + 1); };
+        const auto contact = spread_over_ranks<double>(MPI_COMM_WORLD, n_points, [&](const unsigned int i) {
+          return fe_westergaard_contact_half_width(search.gaps, load_at(i), MPI_COMM_SELF);
+        });
+        for (unsigned int i = 0; i < n_points; ++i)
+          {
+            const double load     = load_at(i);
+            const double fe_ratio = contact[i] / lambda;
+            const double exact    = periodic_array::westergaard_contact_ratio(load);
+            const double curve    = periodic_array::johnson_load(fe_ratio, 0);
+            worst_load            = std::max(worst_load, std::abs(curve - load));
+            worst_contact         = std::max(worst_contact, std::abs(fe_ratio - exact));
+            table.add_row({load, fe_ratio, exact, std::abs(fe_ratio - exact), curve, std::abs(curve - load)});
+          }
+        results.write_csv("westergaard-curve.csv", table);
+        log << "Adhesionless sinusoid: contact half-width a from FE roots of K_I = 0, beside p_bar/p* = "
+               "sin^2(pi "
+               "a/lambda)\n";
+        table.print(log);
+        Table summary = Table::summary();
+        summary.add_row({"largest |a/lambda FE - exact|", Table::Cell(worst_contact, error_digits)});
+        summary.add_row(
+            {"largest |p_bar/p* - sin^2(pi a_FE/lambda)|", Table::Cell(worst_load, error_digits)});
+        search.add_cost(summary);
+        summary.print(log);
+        results.write_csv("westergaard-summary.csv", summary);
+        return verdict("largest error of p_bar/p*", worst_load, tolerance);
+      }
+
+    private:
+      PeriodicGapModelParameters model;
+      std::vector<double>        ring_radii;
+      unsigned int               n_points;
+      double                     tolerance;
+    };
+  } // namespace
+
+  PENNY_REGISTER_SCENE(
+      WestergaardCurveScene, "westergaard-curve",
+      "the adhesionless sinusoid: contact half-width a from FE roots of K_I = 0 beside p_bar/p* = "
+      "sin^2(pi a/lambda)")
+} // namespace penny

@@ -1,0 +1,82 @@
+// zero-load-gap-area: the non-contact area at zero mean pressure against
+// p0/sqrt(V) (paper Fig. 3), by the linear law in closed form and by
+// quadrature, by the exact gap law, and Persson's contact area.
+#include "closed_forms/adhesive_gap.h"
+#include "closed_forms/periodic_array.h"
+#include "numerics/relative_error.h"
+#include "output/table.h"
+#include "problems/rough_surface.h"
+#include "scenes/scene.h"
+#include "statistics/contact_area.h"
+#include "statistics/roughness.h"
+
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+
+namespace penny
+{
+  namespace
+  {
+    class ZeroLoadGapAreaScene : public Scene
+    {
+    public:
+      void parameters(Sections &sections) override
+      {
+        rough_surface_sections(sections, surface);
+        sections.subsection("Zero-load gap area", [&](Entries &entries) {
+          entries.number(
+              "Largest p0/sqrt(V)", largest_adhesion_ratio, 5,
+              interval("[)", 0, std::numeric_limits<double>::infinity()),
+              "p0/sqrt(V) runs from 0 to this value in Area-load/Number of points steps. Units: none.");
+        });
+      }
+
+      Verdict run(const ResultFolder &results, std::ostream &log) override
+      {
+        const auto  &range   = surface.area_load;
+        const double largest = largest_adhesion_ratio;
+        const auto   gaps_of = surface.population(surface.roughness.hurst, surface.roughness.zeta);
+        double       worst   = 0;
+        Table        table({{"p0/sqrtV"},
+                            {"A_nc linear closed form"},
+                            {"A_nc linear integral"},
+                            {"A_nc exact g"},
+                            {"A_c Persson-type"}});
+        for (unsigned int i = 0; i < range.n_points; ++i)
+          {
+            const GapPopulation gaps{gaps_of.prefactor, largest * i / (range.n_points - 1)};
+            const double        closed   = linear_law_noncontact_area(gaps, 0);
+            const double        integral = noncontact_area(gaps, linear_gap_law(gaps.adhesion), 0);
+            worst                        = std::max(worst, relative_error(integral, closed));
+            table.add_row({gaps.adhesion, closed, integral,
+                           noncontact_area(gaps, exact_gap_law(gaps.adhesion), 0),
+                           persson_contact_area(gaps.adhesion, 0)});
+          }
+        results.write_csv("zero-load-gap-area.csv", table);
+
+        const GapPopulation last{gaps_of.prefactor, largest};
+        Table               summary = Table::summary();
+        summary.add_row({"prefactor 3 pi R_p eta sqrt(V)", gaps_of.prefactor});
+        summary.add_row({"largest p0/sqrt(V)", last.adhesion});
+        summary.add_row({"... A_nc/A_0, linear law", linear_law_noncontact_area(last, 0)});
+        summary.add_row({"... A_nc/A_0, exact g", noncontact_area(last, exact_gap_law(last.adhesion), 0)});
+        summary.add_row(
+            {"largest |integral/closed form - 1|, linear law", Table::Cell(worst, Table::Format{2, true})});
+        log << "Non-contact area at zero mean pressure against p0/sqrt(V) (paper Fig. 3)\n"
+            << surface.convention_line() << '\n';
+        summary.print(log);
+        log << "Table: " << results.directory().string() << "/zero-load-gap-area.csv\n";
+        return {};
+      }
+
+    private:
+      RoughSurfaceProblem surface;
+      double              largest_adhesion_ratio;
+    };
+  } // namespace
+
+  PENNY_REGISTER_SCENE(ZeroLoadGapAreaScene, "zero-load-gap-area",
+                       "A_nc/A_0 at zero mean pressure against p0/sqrt(V) (paper Fig. 3)")
+} // namespace penny

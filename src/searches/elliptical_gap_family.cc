@@ -1,0 +1,44 @@
+#include "searches/elliptical_gap_family.h"
+
+#include "fracture/front_stress_intensity.h"
+
+namespace penny
+{
+  using namespace dealii;
+
+  EllipticalGapFamily::EllipticalGapFamily(const EllipticalGapModelParameters &model,
+                                           const double weight_half_width, const double ring_radius,
+                                           TimerOutput &timer)
+      : model(model), weight_half_width(weight_half_width), ring_radius(ring_radius), timer(timer)
+  {
+  }
+
+  std::vector<EllipticalUnitLoadSifs> EllipticalGapFamily::unit_load_sifs(const double               s,
+                                                                          const std::vector<double> &angles)
+  {
+    EllipticalGapModelParameters shaped = model;
+    shaped.mesh.semi_axis_a             = 1;
+    shaped.mesh.semi_axis_b             = s;
+    EllipticalGapModel                 gap(shaped, timer);
+    const EllipticalGapModel::Traction uniform = [](const Point<3> &) { return 1.; };
+    const EllipticalGapModel::Traction xx      = [](const Point<3> &x) { return x[0] * x[0]; };
+    const EllipticalGapModel::Traction yy      = [](const Point<3> &x) { return x[1] * x[1]; };
+    const DisplacementVector           u       = gap.solve(uniform);
+    const DisplacementVector           u_xx    = gap.solve(xx);
+    const DisplacementVector           u_yy    = gap.solve(yy);
+    ++models;
+
+    std::vector<EllipticalUnitLoadSifs> K(angles.size());
+    {
+      TimerOutput::Scope         scope(timer, "J-integral");
+      const FrontStressIntensity front(gap, angles, weight_half_width, {ring_radius});
+      // One ring: [load][0][point].
+      const auto sifs = front.signed_sifs({{&u, &uniform}, {&u_xx, &xx}, {&u_yy, &yy}}, u, uniform);
+      for (unsigned int i = 0; i < angles.size(); ++i)
+        K[i] = {sifs[0][0][i], sifs[1][0][i], sifs[2][0][i]};
+    }
+    if (evaluated)
+      evaluated(s);
+    return K;
+  }
+} // namespace penny
