@@ -51,7 +51,8 @@ namespace
   void check_front(const Triangulation<3> &triangulation, const EllipticalGapMeshParameters &p,
                    const unsigned int n)
   {
-    const std::vector<double> angles = front_vertex_angles(triangulation, p);
+    const std::vector<double> angles =
+        front_vertex_angles(triangulation, EllipticalFront(p.semi_axis_a, p.semi_axis_b));
     BOOST_TEST_REQUIRE(angles.size() == n + 1);
     for (unsigned int e = 0; e <= n; ++e)
       BOOST_TEST(angles[e] == e * M_PI / (2 * n), tt::tolerance(1e-12));

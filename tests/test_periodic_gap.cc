@@ -25,16 +25,16 @@ namespace
   // The model at test size: the model checks on 14 tip levels at degree 3
   // (K_I within about 4e-6), the searches, dozens of solves each, on 10
   // levels at degree 2 (about 1e-4).
-  PeriodicGapDefaults test_size(const bool search = false)
+  PeriodicGapInput test_size(const bool search = false)
   {
-    PeriodicGapDefaults gap    = default_periodic_gap();
+    PeriodicGapInput gap       = default_periodic_gap();
     gap.model.tip_levels       = search ? 10 : 14;
     gap.model.grading_distance = 2;
     gap.model.degree           = search ? 2 : 3;
     return gap;
   }
 
-  PeriodicGapMeasurement solve(const PeriodicGapDefaults &gap, const double c_over_lambda,
+  PeriodicGapMeasurement solve(const PeriodicGapInput &gap, const double c_over_lambda,
                                const double load_ratio)
   {
     dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
@@ -60,7 +60,7 @@ namespace
   // The searches' family of models, on the last ring.
   PeriodicGapFamily test_size_family(dealii::TimerOutput &timer)
   {
-    const PeriodicGapDefaults gap = test_size(true);
+    const PeriodicGapInput gap = test_size(true);
     return PeriodicGapFamily({gap.model, gap.ring_radii.back()}, timer);
   }
 
@@ -72,7 +72,7 @@ namespace
 // is nearly the isolated crack's, of a long one (short ligament) far above it.
 BOOST_AUTO_TEST_CASE(stress_intensity_factor_on_every_ring)
 {
-  const PeriodicGapDefaults gap = test_size();
+  const PeriodicGapInput gap = test_size();
   for (const double c_over_lambda : {0.05, 0.2, 0.3, 0.45})
     check_against_closed_form(solve(gap, c_over_lambda, 0.1), sif_tolerance);
 }
@@ -91,7 +91,7 @@ BOOST_AUTO_TEST_CASE(negative_stress_intensity_factor)
 // with fewer degrees of freedom than degree 6 on every cell.
 BOOST_AUTO_TEST_CASE(graded_degree_ten_digits)
 {
-  PeriodicGapDefaults gap             = default_periodic_gap();
+  PeriodicGapInput gap                = default_periodic_gap();
   gap.model.tip_levels                = 32;
   gap.model.grading_distance          = 1.5;
   gap.model.degree                    = 6;
@@ -104,7 +104,7 @@ BOOST_AUTO_TEST_CASE(graded_degree_ten_digits)
 
 BOOST_AUTO_TEST_CASE(other_scales)
 {
-  PeriodicGapDefaults gap           = test_size();
+  PeriodicGapInput gap              = test_size();
   gap.model.wavelength              = 2e-6;
   gap.model.depth                   = 1.5 * gap.model.wavelength;
   gap.model.material.youngs_modulus = 3e6;
@@ -116,7 +116,7 @@ BOOST_AUTO_TEST_CASE(other_scales)
 // plane z = 0 split at the tip, which is a vertex.
 BOOST_AUTO_TEST_CASE(mesh_and_boundary_ids)
 {
-  const PeriodicGapDefaults gap = test_size();
+  const PeriodicGapInput gap = test_size();
   for (const double c_over_lambda : {0.01, 0.25, 0.49})
     {
       dealii::TimerOutput    timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
@@ -147,7 +147,7 @@ BOOST_AUTO_TEST_CASE(mesh_and_boundary_ids)
 // lambda, its error falling tenfold with each step.
 BOOST_AUTO_TEST_CASE(depth_study_errors_fall_with_depth)
 {
-  PeriodicGapDefaults gap = test_size();
+  PeriodicGapInput    gap = test_size();
   std::vector<double> errors;
   for (const double depth : {0.5, 1., 1.5})
     {
@@ -178,10 +178,10 @@ BOOST_AUTO_TEST_CASE(westergaard_curve)
 // shared by every alpha.
 BOOST_AUTO_TEST_CASE(johnson_curves)
 {
-  dealii::TimerOutput       timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
-  const PeriodicGapDefaults gap = test_size(); // five solves: the finer size
-  PeriodicGapFamily         gaps({gap.model, gap.ring_radii.back()}, timer);
-  std::vector<double>       half_widths;
+  dealii::TimerOutput    timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+  const PeriodicGapInput gap = test_size(); // five solves: the finer size
+  PeriodicGapFamily      gaps({gap.model, gap.ring_radii.back()}, timer);
+  std::vector<double>    half_widths;
   for (unsigned int i = 1; i <= 5; ++i)
     half_widths.push_back(0.5 - 0.5 * i / 6);
   const auto sifs = gaps.unit_load_sifs(half_widths, MPI_COMM_WORLD);

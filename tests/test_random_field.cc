@@ -5,8 +5,8 @@
 // realisations gathered over MPI ranks in index order.
 #define BOOST_TEST_MODULE random_field
 #define BOOST_TEST_NO_MAIN
-#include "parallel/spread_over_ranks.h"
 #include "contact/half_space.h"
+#include "parallel/spread_over_ranks.h"
 #include "statistics/random_field.h"
 #include "statistics/roughness.h"
 

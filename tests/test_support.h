@@ -41,17 +41,10 @@ inline penny::LoadParameters default_load()
 }
 
 // The periodic-gap model at the defaults of its entries, and its J-integral rings.
-struct PeriodicGapDefaults
+inline penny::PeriodicGapInput default_periodic_gap()
 {
-  penny::PeriodicGapModelParameters model;
-  std::vector<double>               ring_radii;
-};
-inline PeriodicGapDefaults default_periodic_gap()
-{
-  return penny::default_values<PeriodicGapDefaults>(
-      [](penny::Sections &sections, PeriodicGapDefaults &defaults) {
-        penny::periodic_gap_model_sections(sections, defaults.model, defaults.ring_radii);
-      });
+  return penny::default_values<penny::PeriodicGapInput>(
+      [](penny::Sections &sections, penny::PeriodicGapInput &periodic) { periodic.sections(sections); });
 }
 
 // A fresh folder in the temporary directory, the same on every MPI rank,

@@ -50,8 +50,8 @@ namespace
       }
     catch (const std::bad_alloc &)
       {
-        return "out of memory: the run needs more memory than it can get (fewer Mesh/Tip refinement levels, "
-               "Global refinements or a lower Finite element/Polynomial degree need less)";
+        return "out of memory: the run needs more memory than it can get (fewer Mesh/Tip refinement "
+               "levels, Global refinements or a lower Finite element/Polynomial degree need less)";
       }
     catch (const std::exception &exception)
       {

@@ -122,49 +122,39 @@ namespace penny
   {
   }
 
-  ClosedForm SneddonSolution::stress_intensity_factor() const
+  // The closed form of the uniform load, `uniform`; that of the parabola,
+  // `uniform` times 1 - 2 c^2/(n a^2); any other load's by `quadrature`.
+  ClosedForm SneddonSolution::exact_or(const double uniform, const double n,
+                                       ClosedForm (SneddonSolution::*quadrature)() const) const
   {
-    const double P = load.peak_tension();
     const double a = load.tension_radius();
     switch (load.type())
       {
       case FaceLoad::Type::uniform:
-        return {2 * P * std::sqrt(c / pi), 0, true};
+        return {uniform, 0, true};
       case FaceLoad::Type::parabolic:
-        return {2 * P * std::sqrt(c / pi) * (1 - 2 * c * c / (3 * a * a)), 0, true};
+        return {uniform * (1 - 2 * c * c / (n * a * a)), 0, true};
       default:
-        return stress_intensity_factor_by_quadrature();
+        return (this->*quadrature)();
       }
+  }
+
+  ClosedForm SneddonSolution::stress_intensity_factor() const
+  {
+    return exact_or(2 * load.peak_tension() * std::sqrt(c / pi), 3,
+                    &SneddonSolution::stress_intensity_factor_by_quadrature);
   }
 
   ClosedForm SneddonSolution::opening_at_centre() const
   {
-    const double P = load.peak_tension();
-    const double a = load.tension_radius();
-    switch (load.type())
-      {
-      case FaceLoad::Type::uniform:
-        return {4 * P * c / (pi * e_prime), 0, true};
-      case FaceLoad::Type::parabolic:
-        return {4 * P * c / (pi * e_prime) * (1 - 2 * c * c / (9 * a * a)), 0, true};
-      default:
-        return opening_at_centre_by_quadrature();
-      }
+    return exact_or(4 * load.peak_tension() * c / (pi * e_prime), 9,
+                    &SneddonSolution::opening_at_centre_by_quadrature);
   }
 
   ClosedForm SneddonSolution::gap_volume() const
   {
-    const double P = load.peak_tension();
-    const double a = load.tension_radius();
-    switch (load.type())
-      {
-      case FaceLoad::Type::uniform:
-        return {16 * P * c * c * c / (3 * e_prime), 0, true};
-      case FaceLoad::Type::parabolic:
-        return {16 * P * c * c * c / (3 * e_prime) * (1 - 2 * c * c / (5 * a * a)), 0, true};
-      default:
-        return gap_volume_by_quadrature();
-      }
+    return exact_or(16 * load.peak_tension() * c * c * c / (3 * e_prime), 5,
+                    &SneddonSolution::gap_volume_by_quadrature);
   }
 
   // w(r) = 4/(pi E') int_r^c F(t) t dt/sqrt(t^2 - r^2) with

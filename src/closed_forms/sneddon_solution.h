@@ -50,6 +50,8 @@ namespace penny
     static constexpr unsigned int profile_evaluations = 31 * 7;
 
   private:
+    ClosedForm exact_or(double uniform, double n, ClosedForm (SneddonSolution::*quadrature)() const) const;
+
     const FaceLoad &load;
     const double    c;
     const double    e_prime;

@@ -2,6 +2,7 @@
 
 #include "fe/boundary_faces.h"
 #include "fe/boundary_ids.h"
+#include "fe/gap_opening.h"
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
@@ -51,28 +52,17 @@ namespace penny
 
   std::vector<double> EllipticalGapModel::front_vertex_angles() const
   {
-    return penny::front_vertex_angles(triangulation, parameters.mesh);
+    return penny::front_vertex_angles(triangulation, crack_front);
   }
 
   double EllipticalGapModel::opening_at_centre(const DisplacementVector &u) const
   {
-    return system.normal_displacement_at_origin(u);
+    return normal_displacement_at_origin(system, u);
   }
 
   double EllipticalGapModel::gap_volume(const DisplacementVector &u) const
   {
-    hp::FEFaceValues<3>              fe_face(system.get_mapping(), system.get_fe(), system.face_gauss(2),
-                                             update_values | update_JxW_values);
-    std::vector<Tensor<1, 3>>        values;
-    const FEValuesExtractors::Vector displacement(0);
-    double                           volume = 0;
-    for_each_boundary_face(system.get_dof_handler(), boundary_id::gap_face, fe_face,
-                           [&](const auto &, const FEFaceValues<3> &face) {
-                             values.resize(face.n_quadrature_points);
-                             face[displacement].get_function_values(u, values);
-                             for (const unsigned int q : face.quadrature_point_indices())
-                               volume += 8 * values[q][2] * face.JxW(q);
-                           });
-    return Utilities::MPI::sum(volume, triangulation.get_communicator());
+    return normal_displacement_integral(system, boundary_id::gap_face, u,
+                                        [](const Point<3> &) { return 8.; });
   }
 } // namespace penny

@@ -21,13 +21,11 @@
 
 namespace penny
 {
-  struct EllipticalGapModelParameters
+  // Built on all ranks, with the degree on every cell.
+  struct EllipticalGapModelParameters : ElasticModelParameters
   {
     EllipticalGapMeshParameters mesh;
     unsigned int                global_refinements;
-    MaterialParameters          material;
-    unsigned int                degree;
-    LinearSolverParameters      linear_solver;
   };
 
   class EllipticalGapModel

@@ -1,6 +1,8 @@
 #include "fe/linear_elastic_system.h"
 
 #include "fe/boundary_faces.h"
+#include "fe/rigid_body_modes.h"
+#include "fe/serial_cholesky.h"
 #include "input/input_error.h"
 
 #include <deal.II/base/quadrature_lib.h>
@@ -15,8 +17,6 @@
 #include <deal.II/lac/vector.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include <Eigen/CholmodSupport>
-#include <Eigen/Sparse>
 #include <Epetra_CrsMatrix.h>
 #include <Epetra_Map.h>
 #include <Epetra_MultiVector.h>
@@ -31,77 +31,6 @@
 namespace penny
 {
   using namespace dealii;
-
-  namespace
-  {
-    // The translations e_i and the rotations e_i x x at the support points of
-    // the locally owned degrees of freedom, in the row order of the matrix.
-    Epetra_MultiVector rigid_body_modes(const DoFHandler<3>            &dof_handler,
-                                        const hp::MappingCollection<3> &mapping, const Epetra_Map &rows)
-    {
-      const FiniteElement<3> &fe    = dof_handler.get_fe(0); // one degree in 3D
-      const IndexSet         &owned = dof_handler.locally_owned_dofs();
-      Epetra_MultiVector      modes(rows, 6);
-      const Quadrature<3>     support_points(fe.get_unit_support_points());
-      FEValues<3>             fe_values(mapping[0], fe, support_points, update_quadrature_points);
-      std::vector<types::global_dof_index> local_dofs(fe.n_dofs_per_cell());
-      for (const auto &cell : dof_handler.active_cell_iterators())
-        if (cell->is_locally_owned())
-          {
-            fe_values.reinit(cell);
-            cell->get_dof_indices(local_dofs);
-            for (unsigned int i = 0; i < local_dofs.size(); ++i)
-              if (owned.is_element(local_dofs[i]))
-                {
-                  const unsigned int row = owned.index_within_set(local_dofs[i]);
-                  const unsigned int c   = fe.system_to_component_index(i).first;
-                  const Point<3>    &x   = fe_values.quadrature_point(i);
-                  modes[c][row]          = 1;
-                  // Rotation about axis r: (e_r x x)_c = eps_crj x_j.
-                  modes[3 + (c + 1) % 3][row] = x[(c + 2) % 3];
-                  modes[3 + (c + 2) % 3][row] = -x[(c + 1) % 3];
-                }
-          }
-      return modes;
-    }
-  } // namespace
-
-  // The supernodal Cholesky factorisation of CHOLMOD (through Eigen) of the
-  // symmetric positive definite stiffness matrix on one rank. Its upper
-  // triangle by columns is, by symmetry, the lower triangle of Epetra's rows.
-  struct SerialCholesky
-  {
-    explicit SerialCholesky(const Epetra_CrsMatrix &matrix)
-        : upper(matrix.NumGlobalRows64(), matrix.NumGlobalRows64())
-    {
-      const int *global_column = matrix.ColMap().MyGlobalElements();
-      upper.reserve(matrix.NumMyNonzeros() / 2 + matrix.NumMyRows());
-      std::vector<std::pair<int, double>> row;
-      for (int column = 0; column < matrix.NumMyRows(); ++column)
-        {
-          // One rank: local row i is global row i, which by symmetry is column i.
-          Assert(matrix.RowMap().GID(column) == column, ExcInternalError());
-          int     n_entries;
-          double *values;
-          int    *columns;
-          matrix.ExtractMyRowView(column, n_entries, values, columns);
-          row.clear();
-          for (int k = 0; k < n_entries; ++k)
-            if (const int i = global_column[columns[k]]; i <= column)
-              row.emplace_back(i, values[k]);
-          std::sort(row.begin(), row.end());
-          upper.startVec(column);
-          for (const auto &[i, value] : row)
-            upper.insertBack(i, column) = value;
-        }
-      upper.finalize();
-      factors.cholmod().print = 0; // failures are reported through info(), in one line
-      factors.compute(upper);
-    }
-
-    Eigen::SparseMatrix<double>                                            upper;
-    Eigen::CholmodSupernodalLLT<Eigen::SparseMatrix<double>, Eigen::Upper> factors;
-  };
 
   namespace
   {
@@ -154,19 +83,6 @@ namespace penny
     distribute_and_constrain();
     assemble_matrix();
     factorise();
-  }
-
-  template <typename Kinematics>
-  double LinearElasticSystem<Kinematics>::normal_displacement_at_origin(const DisplacementVector &u) const
-  {
-    double value = 0;
-    for (const auto &cell : dof_handler.active_cell_iterators())
-      if (cell->is_locally_owned())
-        for (const unsigned int v : cell->vertex_indices())
-          if (cell->vertex(v).norm() == 0 && dof_handler.locally_owned_dofs().is_element(
-                                                 cell->vertex_dof_index(v, dim - 1, cell->active_fe_index())))
-            value = u(cell->vertex_dof_index(v, dim - 1, cell->active_fe_index()));
-    return Utilities::MPI::sum(value, get_communicator());
   }
 
   std::string solver_name(const LinearSolverParameters &linear_solver, const MPI_Comm communicator)
@@ -312,8 +228,8 @@ namespace penny
             cholesky = std::make_unique<SerialCholesky>(stiffness.trilinos_matrix());
             if (cholesky->factors.info() != Eigen::Success)
               throw std::runtime_error(
-                  "solve: CHOLMOD could not factorise the stiffness matrix: it is not "
-                  "positive definite (a solid free to move) or too large for the memory");
+                  "solve: CHOLMOD could not factorise the stiffness matrix: it is not positive definite (a "
+                  "solid free to move) or too large for the memory");
           }
         else
           {

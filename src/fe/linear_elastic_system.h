@@ -54,6 +54,20 @@ namespace penny
     unsigned int max_iterations;
   };
 
+  // What every model is built with besides its geometry and mesh.
+  struct ElasticModelParameters
+  {
+    MaterialParameters material;
+    unsigned int       degree;
+    // Tip refinement levels per step down in degree towards a crack tip
+    // (fe/tip_graded_mesh.h): 0 for the degree on every cell.
+    unsigned int           levels_per_degree = 0;
+    LinearSolverParameters linear_solver;
+    // The ranks that share the model: all of them, or one alone when a sweep
+    // gives each rank its own solves.
+    MPI_Comm communicator = MPI_COMM_WORLD;
+  };
+
   // A solve that failed or missed its tolerance.
   struct LinearSolverFailure : std::runtime_error
   {
@@ -135,10 +149,6 @@ namespace penny
     std::size_t n_matrix_entries() const { return stiffness.n_nonzero_elements(); }
 
     std::string solver_name() const { return penny::solver_name(linear_solver, get_communicator()); }
-
-    // The last component of u (u_z) at the origin, which must be a vertex:
-    // read on the rank that owns that degree of freedom, known on every rank.
-    double normal_displacement_at_origin(const DisplacementVector &u) const;
 
   private:
     void distribute_and_constrain();

@@ -347,8 +347,8 @@ namespace penny
             if (!placed)
               throw InputError(source + " has a face tagged " + std::to_string(id) + " at " +
                                point_text(face->center()) +
-                               " off its side (1 axis r = 0, 2 gap face z = 0 r < c, 3 ligament z = 0 r > c, "
-                               "4 far boundary r = R or z = H), or a boundary inside the solid");
+                               " off its side (1 axis r = 0, 2 gap face z = 0 r < c, 3 ligament z = 0 r > "
+                               "c, 4 far boundary r = R or z = H), or a boundary inside the solid");
             length[id] += a.distance(b);
           }
       for (const auto &[id, expected] : std::map<types::boundary_id, double>{{boundary_id::symmetry, H},

@@ -2,6 +2,7 @@
 
 #include "fe/boundary_faces.h"
 #include "fe/boundary_ids.h"
+#include "fe/gap_opening.h"
 #include "fe/tip_graded_mesh.h"
 
 #include <deal.II/base/quadrature_lib.h>
@@ -82,24 +83,12 @@ namespace penny
 
   double PennyGapModel::opening_at_centre(const DisplacementVector &u) const
   {
-    return system.normal_displacement_at_origin(u);
+    return normal_displacement_at_origin(system, u);
   }
 
   double PennyGapModel::gap_volume(const DisplacementVector &u) const
   {
-    hp::FEFaceValues<2>              fe_face(system.get_mapping(), system.get_fe(), system.face_gauss(2),
-                                             update_values | update_quadrature_points | update_JxW_values);
-    std::vector<Tensor<1, 2>>        values;
-    const FEValuesExtractors::Vector displacement(0);
-    double                           volume = 0;
-    for_each_boundary_face(system.get_dof_handler(), boundary_id::gap_face, fe_face,
-                           [&](const auto &, const FEFaceValues<2> &face) {
-                             values.resize(face.n_quadrature_points);
-                             face[displacement].get_function_values(u, values);
-                             for (const unsigned int q : face.quadrature_point_indices())
-                               volume += 2 * 2 * numbers::PI * face.quadrature_point(q)[0] * values[q][1] *
-                                         face.JxW(q);
-                           });
-    return Utilities::MPI::sum(volume, triangulation.get_communicator());
+    return normal_displacement_integral(system, boundary_id::gap_face, u,
+                                        [](const Point<2> &x) { return 2 * 2 * numbers::PI * x[0]; });
   }
 } // namespace penny

@@ -18,19 +18,10 @@
 namespace penny
 {
   // What a penny-gap model is built from.
-  struct PennyGapModelParameters
+  struct PennyGapModelParameters : ElasticModelParameters
   {
-    GeometryParameters     geometry;
-    MaterialParameters     material;
-    MeshParameters         mesh;
-    unsigned int           degree;
-    LinearSolverParameters linear_solver;
-    // The ranks that share the model: all of them, or one alone when a sweep
-    // gives each rank its own solves.
-    MPI_Comm communicator = MPI_COMM_WORLD;
-    // Tip refinement levels per step down in degree towards the tip
-    // (fe/tip_graded_mesh.h): 0 for the degree on every cell.
-    unsigned int levels_per_degree = 0;
+    GeometryParameters geometry;
+    MeshParameters     mesh;
 
     // The same model for a gap of radius c: R/c and H/c kept, so the meshes
     // of a search over c are exactly similar.

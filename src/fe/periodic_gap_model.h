@@ -20,22 +20,14 @@
 namespace penny
 {
   // What a periodic-gap model is built from.
-  struct PeriodicGapModelParameters
+  // The degree is graded in tip levels below min(c, lambda/2 - c).
+  struct PeriodicGapModelParameters : ElasticModelParameters
   {
-    double                 wavelength;       // lambda (m)
-    double                 depth;            // D (m)
-    double                 gap_half_width;   // c (m), 0 < c < lambda/2
-    unsigned int           tip_levels;       // tip cells are min(c, lambda/2 - c)/2^levels wide
-    double                 grading_distance; // in cell widths (fe/tip_graded_mesh.h)
-    MaterialParameters     material;
-    unsigned int           degree;
-    LinearSolverParameters linear_solver;
-    // The ranks that share the model: all of them, or one alone when a sweep
-    // gives each rank its own solves.
-    MPI_Comm communicator = MPI_COMM_WORLD;
-    // Tip refinement levels (below min(c, lambda/2 - c)) per step down in
-    // degree towards the tip (fe/tip_graded_mesh.h): 0 for the degree on every cell.
-    unsigned int levels_per_degree = 0;
+    double       wavelength;       // lambda (m)
+    double       depth;            // D (m)
+    double       gap_half_width;   // c (m), 0 < c < lambda/2
+    unsigned int tip_levels;       // tip cells are min(c, lambda/2 - c)/2^levels wide
+    double       grading_distance; // in cell widths (fe/tip_graded_mesh.h)
 
     // The same model with the gap half-width c.
     PeriodicGapModelParameters with_gap_half_width(double c) const;

@@ -56,6 +56,16 @@ namespace penny
             [=](const double x) { return (lo_open ? x > lo : x >= lo) && (hi_open ? x < hi : x <= hi); }};
   }
 
+  Range above(const double lo, const std::string &unit)
+  {
+    return interval("()", lo, std::numeric_limits<double>::infinity(), unit);
+  }
+
+  Range at_least(const double lo, const std::string &unit)
+  {
+    return interval("[)", lo, std::numeric_limits<double>::infinity(), unit);
+  }
+
   Range magnitude(const std::string &unit)
   {
     return {"[1e-30, 1e30] " + unit,
@@ -159,11 +169,11 @@ namespace penny
       value = prm.get_bool(entry);
   }
 
-  void Entries::choice_entry(const std::string &entry, std::string &value, const std::string &default_value,
-                             const std::vector<std::string> &options, const std::string &documentation)
+  void Entries::text_entry(const std::string &entry, std::string &value, const std::string &default_value,
+                           const Patterns::PatternBase &pattern, const std::string &documentation)
   {
     if (!reading_)
-      prm.declare_entry(entry, default_value, Patterns::Selection(joined(options, "|")), documentation);
+      prm.declare_entry(entry, default_value, pattern, documentation);
     else
       value = prm.get(entry);
   }
@@ -171,22 +181,14 @@ namespace penny
   void Entries::text(const std::string &entry, std::string &value, const std::string &default_value,
                      const std::string &documentation)
   {
-    if (!reading_)
-      prm.declare_entry(entry, default_value, Patterns::Anything(), documentation);
-    else
-      value = prm.get(entry);
+    text_entry(entry, value, default_value, Patterns::Anything(), documentation);
   }
 
   void Entries::file(const std::string &entry, std::string &value, const std::string &default_value,
                      const std::string &documentation)
   {
-    if (!reading_)
-      {
-        prm.declare_entry(entry, default_value, Patterns::FileName(), documentation);
-        return;
-      }
-    value = prm.get(entry);
-    if (std::filesystem::path(value).is_relative())
+    text_entry(entry, value, default_value, Patterns::FileName(), documentation);
+    if (reading_ && std::filesystem::path(value).is_relative())
       value = (std::filesystem::path(folder) / value).lexically_normal().string();
   }
 
@@ -229,5 +231,11 @@ namespace penny
   {
     if (reading_)
       check();
+  }
+
+  void Sections::input_file(const std::string &path)
+  {
+    if (reading_)
+      files.push_back(path);
   }
 } // namespace penny

@@ -33,6 +33,10 @@ namespace penny
   // infinite end reads "inf".
   Range interval(const std::string &brackets, double lo, double hi, const std::string &unit = "");
 
+  // (lo, inf) and [lo, inf): the open-ended intervals.
+  Range above(double lo, const std::string &unit = "");
+  Range at_least(double lo, const std::string &unit = "");
+
   // [1e-30, 1e30] `unit`: moduli, lengths and tractions, far inside the range
   // of double, so that no product the solvers form (stiffness E R, load P c^2,
   // energy P^2 c^3/E', and their squares in norms) overflows or underflows.
@@ -77,15 +81,14 @@ namespace penny
     void choice(const std::string &entry, Enum &value, Enum default_value, const EnumNames<Enum> &names,
                 const std::string &documentation)
     {
-      std::vector<std::string> options;
-      std::string              chosen, default_name;
+      std::string options, chosen, default_name;
       for (const auto &[name, option] : names)
         {
-          options.push_back(name);
+          options += (options.empty() ? "" : "|") + name;
           if (option == default_value)
             default_name = name;
         }
-      choice_entry(entry, chosen, default_name, options, documentation);
+      text_entry(entry, chosen, default_name, dealii::Patterns::Selection(options), documentation);
       for (const auto &[name, option] : names)
         if (reading_ && name == chosen)
           value = option;
@@ -112,8 +115,9 @@ namespace penny
   private:
     void integer_entry(const std::string &entry, long long &value, long long default_value, long long lo,
                        long long hi, const std::string &documentation);
-    void choice_entry(const std::string &entry, std::string &value, const std::string &default_value,
-                      const std::vector<std::string> &options, const std::string &documentation);
+    // An entry read as text that matches `pattern`.
+    void text_entry(const std::string &entry, std::string &value, const std::string &default_value,
+                    const dealii::Patterns::PatternBase &pattern, const std::string &documentation);
 
     dealii::ParameterHandler &prm;
     const std::string         subsection;
@@ -138,12 +142,18 @@ namespace penny
     // Runs `check` once the entries are read (not while they are declared).
     void check(const std::function<void()> &check) const;
 
+    // A file the run reads, named by an entry that was read (a mesh, a
+    // spectrum): replacing the output folder must not remove it.
+    void                            input_file(const std::string &path);
+    const std::vector<std::string> &input_files() const { return files; }
+
     bool reading() const { return reading_; }
 
   private:
     dealii::ParameterHandler &prm;
     const bool                reading_;
     const std::string         folder;
+    std::vector<std::string>  files;
   };
 
   // The values a list of subsections holds at the defaults of its entries:

@@ -59,8 +59,8 @@ namespace penny
         std::smatch match;
         if (typeid(exception) == typeid(ParameterHandler::ExcNoSubsection) &&
             std::regex_search(message, match,
-                              std::regex("Line <([0-9]+)> of file <.*: There is no such "
-                                         "subsection to be entered: (.*)$")))
+                              std::regex("Line <([0-9]+)> of file <.*: There is no such subsection to be "
+                                         "entered: (.*)$")))
           message = "line " + match[1].str() + ": subsection '" + match[2].str() +
                     "' is not read by Scene = " + scene + " ('penny --print-parameters " + scene +
                     "' lists what it reads)";

@@ -20,8 +20,9 @@ namespace penny
       const std::size_t  n = points.size();
       std::ostringstream vtu;
       vtu.precision(16);
-      vtu << "<?xml version=\"1.0\"?>\n<VTKFile type=\"UnstructuredGrid\" "
-             "version=\"0.1\">\n<UnstructuredGrid>\n"
+      vtu << "<?xml version=\"1.0\"?>\n"
+             "<VTKFile type=\"UnstructuredGrid\" version=\"0.1\">\n"
+             "<UnstructuredGrid>\n"
           << "<Piece NumberOfPoints=\"" << n << "\" NumberOfCells=\"1\">\n<PointData>\n";
       for (const auto &[name, values] : data)
         {
@@ -33,8 +34,10 @@ namespace penny
       vtu << "</PointData>\n<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">";
       for (const auto &x : points)
         vtu << ' ' << x[0] << ' ' << x[1] << ' ' << x[2];
-      vtu << "</DataArray>\n</Points>\n<Cells>\n<DataArray type=\"Int64\" Name=\"connectivity\" "
-             "format=\"ascii\">";
+      vtu << "</DataArray>\n"
+             "</Points>\n"
+             "<Cells>\n"
+             "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">";
       for (std::size_t i = 0; i < n; ++i)
         vtu << ' ' << i;
       vtu << "</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\"> " << n

@@ -187,7 +187,7 @@ namespace penny
         all.end());
 
     // The exact profile on rank 0 only: it may cost a quadrature per point.
-    Table table({{"r (m)"}, {"r/c"}, {"w FE (m)"}, {"w exact (m)"}});
+    Table table({"r (m)", "r/c", "w FE (m)", "w exact (m)"});
     if (Utilities::MPI::this_mpi_process(system.get_communicator()) == 0)
       {
         const SneddonSolution exact(load, gap_radius, plane_strain_modulus);

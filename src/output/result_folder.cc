@@ -239,4 +239,13 @@ namespace penny
     });
     committed = true;
   }
+
+  void publish(const Table &table, const std::string &file, const ResultFolder &results, std::ostream &log,
+               const std::string &title)
+  {
+    if (!title.empty())
+      log << title << '\n';
+    table.print(log);
+    results.write_csv(file, table);
+  }
 } // namespace penny

@@ -18,6 +18,7 @@
 #include "output/table.h"
 
 #include <filesystem>
+#include <ostream>
 #include <string>
 #include <vector>
 
@@ -59,4 +60,8 @@ namespace penny
     int                   lock      = -1;    // rank 0: the descriptor of the locked lock file
     bool                  committed = false;
   };
+  // A table as the scenes show a result: printed to `log` under the line
+  // `title` (if any) and written into `results` as the CSV file `file`.
+  void publish(const Table &table, const std::string &file, const ResultFolder &results, std::ostream &log,
+               const std::string &title = "");
 } // namespace penny

@@ -51,6 +51,14 @@ namespace penny
 
   Table::Table(std::vector<Column> columns) : columns(std::move(columns)) {}
 
+  std::string Table::label(const double value, const int digits)
+  {
+    std::ostringstream text;
+    text.precision(digits);
+    text << value;
+    return text.str();
+  }
+
   Table Table::summary()
   {
     return Table({{"quantity"}, {"value"}});

@@ -22,8 +22,14 @@ namespace penny
       bool scientific = false;
     };
 
+    // A column named by its text alone takes the default format:
+    // Table({"H", "zeta", {"error", Format{3, true}}}).
     struct Column
     {
+      Column(const char *name) : name(name) {}
+      Column(std::string name) : name(std::move(name)) {}
+      Column(std::string name, const Format format) : name(std::move(name)), format(format) {}
+
       std::string name;
       Format      format = {};
     };
@@ -54,6 +60,10 @@ namespace penny
     void add_row(std::vector<Cell> row);
 
     std::size_t n_rows() const { return rows.size(); }
+
+    // A number as a column name or a note shows it, to `digits` digits:
+    // "p_bar/p* alpha=0.2".
+    static std::string label(double value, int digits = 6);
 
     void        print(std::ostream &out) const;
     std::string csv() const;

@@ -13,7 +13,6 @@
 
 #include <algorithm>
 #include <iostream>
-#include <limits>
 #include <sstream>
 
 namespace penny
@@ -60,18 +59,17 @@ namespace penny
   void elliptical_model_sections(Sections &sections, EllipticalModel &model)
   {
     auto &mesh = model.model.mesh;
-    material_section(sections, model.model.material);
+    elastic_model_sections(sections, model.model, false);
     sections.subsection("Elliptical model", [&](Entries &entries) {
-      const double infinity = std::numeric_limits<double>::infinity();
-      entries.number("Box width R/a", mesh.domain_width, 40, interval("[)", 2.8, infinity),
+      entries.number("Box width R/a", mesh.domain_width, 40, at_least(2.8),
                      "The quarter model reaches x = R and y = R; free there. Units: a.");
-      entries.number("Box height H/a", mesh.domain_height, 40, interval("[)", 2.8, infinity),
+      entries.number("Box height H/a", mesh.domain_height, 40, at_least(2.8),
                      "The model reaches z = H; free there (at 20 instead of 40 K_I of the circle moves by "
                      "1e-4). Units: a.");
       entries.integer(
           "Cells along front", mesh.cells_along_front, 16u, 2u, 256u,
-          "Edges of the quarter front 0 <= phi <= pi/2, evenly spaced in the parametric angle phi; "
-          "even. Units: none.");
+          "Edges of the quarter front 0 <= phi <= pi/2, evenly spaced in the parametric angle phi; even. "
+          "Units: none.");
       entries.require(mesh.cells_along_front % 2 == 0, "Cells along front", mesh.cells_along_front,
                       "{2, 4, 6, ..., 256}");
       entries.integer("Sectors around front", mesh.cells_around_front, 8u, 4u, 64u,
@@ -81,27 +79,25 @@ namespace penny
                       "{4, 8, 12, ..., 64}");
       entries.number(
           "Front cell size", mesh.front_cell_size, 1e-3, interval("()", 0, 0.33),
-          "Radius of the innermost ring of cells around the front (a across the front at phi = 0, b "
-          "at pi/2). Units: b.");
+          "Radius of the innermost ring of cells around the front (a across the front at phi = 0, b at "
+          "pi/2). Units: b.");
       entries.number("Ring ratio", mesh.ring_ratio, 1.6, interval("(]", 1, 4),
                      "Nominal ratio of successive ring radii around the front. Units: none.");
       entries.integer(
           "Global refinements", model.model.global_refinements, 0u, 0u, 3u,
-          "Uniform refinements of the graded coarse mesh (each multiplies the DoFs by about 8); new "
-          "front points lie on the ellipse. Units: none.");
+          "Uniform refinements of the graded coarse mesh (each multiplies the DoFs by about 8); new front "
+          "points lie on the ellipse. Units: none.");
       entries.number(
-          "Front weight half-width", model.weight_half_width, 2, interval("()", 0, infinity),
-          "Half-width of the weight along the front of each domain integral, in front cells of the "
-          "refined mesh; up to Cells along front x 2^Global refinements. Units: front cells.");
+          "Front weight half-width", model.weight_half_width, 2, above(0),
+          "Half-width of the weight along the front of each domain integral, in front cells of the refined "
+          "mesh; up to Cells along front x 2^Global refinements. Units: front cells.");
       entries.require(model.weight_half_width <= (mesh.cells_along_front << model.model.global_refinements),
                       "Front weight half-width", model.weight_half_width,
                       "(0, Cells along front x 2^Global refinements]");
       entries.numbers("Ring radii", model.ring_radii, {0.1, 0.2, 0.4}, interval("()", 0, 1),
-                      "Radii rho of the J-integral tubes around the front, q = (1 - (d/rho)^2)^4 across it; "
-                      "below the smallest radius of curvature b^2/a of the front. Units: b^2/a.");
+                      "Radii rho of the J-integral tubes around the front, q = (1 - (d/rho)^2)^4 across "
+                      "it; below the smallest radius of curvature b^2/a of the front. Units: b^2/a.");
     });
-    finite_element_section(sections, model.model.degree, nullptr);
-    linear_solver_section(sections, model.model.linear_solver);
   }
 
   void elliptical_gap_section(Sections &sections, EllipticalGap &gap)
@@ -116,8 +112,8 @@ namespace penny
       entries.require(gap.pressure != 0, "Pressure p", gap.pressure,
                       "|p| in [1e-30, 1e30] Pa: a zero load opens nothing");
       entries.integer("Front points", gap.front_points, 17u, 2u, 1000u,
-                      "K_I is reported at phi = i pi/(2 (n - 1)), i = 0 ... n - 1, one domain integral each. "
-                      "Units: none.");
+                      "K_I is reported at phi = i pi/(2 (n - 1)), i = 0 ... n - 1, one domain integral "
+                      "each. Units: none.");
     });
   }
 

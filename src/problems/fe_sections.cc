@@ -1,36 +1,35 @@
 #include "problems/fe_sections.h"
 
+#include "problems/solid.h"
+
 namespace penny
 {
-  void finite_element_section(Sections &sections, unsigned int &degree, unsigned int *levels_per_degree)
-  {
-    sections.subsection("Finite element", [&](Entries &entries) {
-      entries.integer("Polynomial degree", degree, 4u, 1u, 8u,
-                      "Degree of the continuous Lagrange elements of the displacement. Units: none.");
-      if (levels_per_degree)
-        entries.integer(
-            "Degree grading", *levels_per_degree, 0u, 0u, 64u,
-            "Tip refinement levels per step down in degree. Cells b/2^k wide (b = c, or "
-            "min(c, lambda/2 - c) for the periodic gap) get degree max(1, degree - floor(k / "
-            "this)), so the small cells near the tip carry low degrees (hp); 0 keeps the degree on "
-            "every cell. Units: levels.");
-    });
-  }
-
-  void linear_solver_section(Sections &sections, LinearSolverParameters &linear_solver)
+  void elastic_model_sections(Sections &sections, ElasticModelParameters &model, const bool graded_degree)
   {
     using Type = LinearSolverParameters::Type;
+    material_section(sections, model.material);
+    sections.subsection("Finite element", [&](Entries &entries) {
+      entries.integer("Polynomial degree", model.degree, 4u, 1u, 8u,
+                      "Degree of the continuous Lagrange elements of the displacement. Units: none.");
+      if (graded_degree)
+        entries.integer(
+            "Degree grading", model.levels_per_degree, 0u, 0u, 64u,
+            "Tip refinement levels per step down in degree. Cells b/2^k wide (b = c, or min(c, lambda/2 - "
+            "c) for the periodic gap) get degree max(1, degree - floor(k / this)), so the small cells near "
+            "the tip carry low degrees (hp); 0 keeps the degree on every cell. Units: levels.");
+    });
     sections.subsection("Linear solver", [&](Entries &entries) {
+      auto &solver = model.linear_solver;
       entries.choice(
-          "Type", linear_solver.type, Type::direct,
+          "Type", solver.type, Type::direct,
           EnumNames<Type>{{"direct", Type::direct}, {"cg-amg", Type::cg_amg}},
-          "direct: sparse Cholesky (CHOLMOD) on one MPI rank, sparse LU (MUMPS through Trilinos "
-          "Amesos) on several. cg-amg: conjugate gradients preconditioned with Trilinos' algebraic "
-          "multigrid, for large meshes.");
-      entries.number("Tolerance", linear_solver.tolerance, 1e-9, interval("(]", 0, 1),
+          "direct: sparse Cholesky (CHOLMOD) on one MPI rank, sparse LU (MUMPS through Trilinos Amesos) on "
+          "several. cg-amg: conjugate gradients preconditioned with Trilinos' algebraic multigrid, for "
+          "large meshes.");
+      entries.number("Tolerance", solver.tolerance, 1e-9, interval("(]", 0, 1),
                      "Relative residual |A u - b|/|b| the iterative solver must reach; a direct solve that "
                      "misses it is an error too. Units: none.");
-      entries.integer("Maximum iterations", linear_solver.max_iterations, 10000u, 1u, 100000000u,
+      entries.integer("Maximum iterations", solver.max_iterations, 10000u, 1u, 100000000u,
                       "Iteration limit of the iterative solver. Units: none.");
     });
   }

@@ -1,5 +1,6 @@
-// The subsections of every finite-element model's discretisation: the
-// element degree ('Finite element') and the linear solver ('Linear solver').
+// The subsections every finite-element model reads besides its geometry and
+// mesh: the solid (Material), the element degree (Finite element) and the
+// linear solver (Linear solver).
 #pragma once
 
 #include "fe/linear_elastic_system.h"
@@ -7,9 +8,7 @@
 
 namespace penny
 {
-  // Finite element: the polynomial degree and, for the models that grade it
-  // towards a crack tip (`levels_per_degree` not null), the Degree grading.
-  void finite_element_section(Sections &sections, unsigned int &degree, unsigned int *levels_per_degree);
-
-  void linear_solver_section(Sections &sections, LinearSolverParameters &linear_solver);
+  // Material, Finite element (with its Degree grading for the models that
+  // grade the degree towards a crack tip) and Linear solver.
+  void elastic_model_sections(Sections &sections, ElasticModelParameters &model, bool graded_degree);
 } // namespace penny

@@ -4,6 +4,7 @@
 #include "fracture/crack_extension.h"
 #include "fracture/domain_integral.h"
 #include "input/input_error.h"
+#include "numerics/relative_error.h"
 #include "output/field_output.h"
 #include "output/phase_times.h"
 #include "problems/fe_sections.h"
@@ -66,11 +67,11 @@ namespace penny
         entries.integer("Tip refinement levels", mesh.tip_levels, 30u, 0u, 40u,
                         "Cells at the tip are c / 2^levels wide. Units: none.");
         entries.integer("Gap face levels", mesh.gap_face_levels, 3u, 0u, 10u,
-                        "builtin only: cells over the gap face, within c of it, are at most c/2^levels wide; "
-                        "they resolve the face opening w(r). Units: none.");
+                        "builtin only: cells over the gap face, within c of it, are at most c/2^levels "
+                        "wide; they resolve the face opening w(r). Units: none.");
         entries.number("Grading distance", mesh.grading_distance, 2, interval("[]", 0.5, 100),
-                       "A cell is refined while it lies closer to the tip than this many of its own widths; "
-                       "larger values give more cells per ring. Units: cell widths.");
+                       "A cell is refined while it lies closer to the tip than this many of its own "
+                       "widths; larger values give more cells per ring. Units: cell widths.");
         entries.number("Cell aspect ratio", mesh.cell_aspect_ratio, 1, interval("[]", 1, 1000),
                        "builtin only: cells above z = min(c, H/2) are stretched along z to this many times "
                        "their width; the tip zone keeps square cells. A stress test of the mesh and the J "
@@ -78,9 +79,9 @@ namespace penny
         entries.integer("Global refinements", mesh.global_refinements, 0u, 0u, 10u,
                         "Uniform refinements after the grading (h-convergence). Units: none.");
         entries.file("Mesh file", mesh.mesh_file, "../meshes/penny-gap.geo",
-                     "gmsh .geo or .msh file (relative paths start at the parameter file's folder). Physical "
-                     "tags: surface 1 = solid; curves 1 = axis r = 0, 2 = gap face z = 0 r < c, 3 = ligament "
-                     "z = 0 r > c, 4 = far boundary.");
+                     "gmsh .geo or .msh file (relative paths start at the parameter file's folder). "
+                     "Physical tags: surface 1 = solid; curves 1 = axis r = 0, 2 = gap face z = 0 r < c, 3 "
+                     "= ligament z = 0 r > c, 4 = far boundary.");
       });
     }
 
@@ -144,8 +145,8 @@ namespace penny
       bool by_summit_radius = false;
       entries.choice("Parabola given by", by_summit_radius, false,
                      EnumNames<bool>{{"a", false}, {"R_p", true}},
-                     "Whether the parabola is fixed by its tensile radius a or by the pressure summit radius "
-                     "R_p, with a^2 = 2 R_p P.");
+                     "Whether the parabola is fixed by its tensile radius a or by the pressure summit "
+                     "radius R_p, with a^2 = 2 R_p P.");
       entries.number("Tension radius a", load.tension_radius, 1.25, magnitude("m"),
                      "Radius where the parabolic tension vanishes. Units: m.");
       entries.number("Summit radius R_p", load.summit_radius, 7.8125e-7, magnitude("m^2/Pa"),
@@ -169,18 +170,38 @@ namespace penny
   void penny_gap_model_sections(Sections &sections, PennyGapModelParameters &model)
   {
     geometry_section(sections, model.geometry);
-    material_section(sections, model.material);
     mesh_section(sections, model.mesh);
-    finite_element_section(sections, model.degree, &model.levels_per_degree);
-    linear_solver_section(sections, model.linear_solver);
-    sections.check([&] { check_model_size(model, model_cells(model)); });
+    elastic_model_sections(sections, model, true);
+    sections.check([&] {
+      check_model_size(model, model_cells(model));
+      if (model.mesh.generator == MeshParameters::Generator::gmsh)
+        sections.input_file(model.mesh.mesh_file);
+    });
   }
 
-  std::vector<std::string> model_input_files(const PennyGapModelParameters &model)
+  void PennyGapInput::sections(Sections &sections, LoadParameters *face_load)
   {
-    if (model.mesh.generator == MeshParameters::Generator::gmsh)
-      return {model.mesh.mesh_file};
-    return {};
+    penny_gap_model_sections(sections, model);
+    if (face_load)
+      face_load_section(sections, *face_load, model.geometry);
+    ring_section(sections, ring_radii, model.geometry);
+  }
+
+  void AdhesiveGapInput::sections(Sections &sections, double *peak_tension)
+  {
+    gap.sections(sections);
+    summit.sections(sections, gap.model.material, peak_tension);
+  }
+
+  void AdhesiveSummit::sections(Sections &sections, const MaterialParameters &material, double *peak_tension)
+  {
+    sections.subsection("Load", [&](Entries &entries) {
+      if (peak_tension)
+        peak_tension_entry(entries, *peak_tension);
+      entries.number("Summit radius R_p", summit_radius, 7.8125e-7, magnitude("m^2/Pa"),
+                     "Radius of the pressure summit, p = P - r^2/(2 R_p). Units: m^2/Pa.");
+    });
+    adhesion_section(sections, critical_stress_intensity, material);
   }
 
   double model_cells(const PennyGapModelParameters &model)
@@ -233,8 +254,8 @@ namespace penny
       peak_tension_entry(entries, load.peak_tension);
       parabola_entries(entries, load);
       entries.text("Expression", load.expression, "1e6 * (r/c)^4",
-                   "p(r) for Type = expression, in muparser syntax; variable r (m), constants c (gap radius, "
-                   "m), P (peak tension, Pa) and pi. Units: Pa.");
+                   "p(r) for Type = expression, in muparser syntax; variable r (m), constants c (gap "
+                   "radius, m), P (peak tension, Pa) and pi. Units: Pa.");
     });
     sections.check([&] { check_on_face(load, geometry.gap_radius); });
   }
@@ -246,16 +267,6 @@ namespace penny
       parabola_entries(entries, load);
     });
     load.type = LoadParameters::Type::parabolic;
-  }
-
-  void summit_section(Sections &sections, double &summit_radius, double *peak_tension)
-  {
-    sections.subsection("Load", [&](Entries &entries) {
-      if (peak_tension)
-        peak_tension_entry(entries, *peak_tension);
-      entries.number("Summit radius R_p", summit_radius, 7.8125e-7, magnitude("m^2/Pa"),
-                     "Radius of the pressure summit, p = P - r^2/(2 R_p). Units: m^2/Pa.");
-    });
   }
 
   void ring_section(Sections &sections, std::vector<double> &ring_radii, const GeometryParameters &geometry)
@@ -273,6 +284,34 @@ namespace penny
       entries.require(max_radius * c < room, "Ring radii", max_radius,
                       "(0, min(H, R - c)/c = " + Utilities::to_string(room / c) + ")");
     });
+  }
+
+  double report_rings(const std::vector<RingResult> &rings, const double exact, const std::string &ring_unit,
+                      const Table &summary, const ResultFolder &results, std::ostream &log)
+  {
+    const Table::Format digits{10, true}, error_digits{3, true};
+    Table               table({{"ring (" + ring_unit + ")", digits},
+                               {"J (J/m^2)", digits},
+                               {"|K_I| FE (Pa m^1/2)", digits},
+                               {"K_I signed FE (Pa m^1/2)", digits},
+                               {"K_I exact (Pa m^1/2)", digits},
+                               {"|K_I| relative error", error_digits},
+                               {"signed K_I relative error", error_digits}});
+    double              worst = 0;
+    for (const auto &ring : rings)
+      {
+        const double modulus_error = relative_error(ring.stress_intensity_factor, std::abs(exact));
+        const double signed_error  = relative_error(ring.signed_stress_intensity_factor, exact);
+        worst                      = std::max({worst, modulus_error, signed_error});
+        table.add_row({ring.radius, ring.energy_release_rate, ring.stress_intensity_factor,
+                       ring.signed_stress_intensity_factor, exact, modulus_error, signed_error});
+      }
+    publish(table, "rings.csv", results, log);
+    if (rings.back().signed_stress_intensity_factor < 0)
+      log << "K_I < 0: the faces would interpenetrate; no open gap of this size carries this load.\n";
+    log << '\n';
+    publish(summary, "summary.csv", results, log);
+    return worst;
   }
 
   PennyGapMeasurement measure_penny_gap(PennyGapModel &model, const FaceLoad &load,
@@ -340,10 +379,9 @@ namespace penny
     return measure_penny_gap(gap, FaceLoad(load, model.geometry.gap_radius), ring_radii, timer);
   }
 
-  PennyGapSearch::PennyGapSearch(const PennyGapModelParameters &model, const double ring_radius,
-                                 std::ostream &log)
-      : timer(std::cout, TimerOutput::never, TimerOutput::wall_times), gaps({model, ring_radius}, timer),
-        progress(log, "gap radii solved")
+  PennyGapSearch::PennyGapSearch(const PennyGapInput &gap, std::ostream &log)
+      : timer(std::cout, TimerOutput::never, TimerOutput::wall_times),
+        gaps({gap.model, gap.ring_radii.back()}, timer), progress(log, "gap radii solved")
   {
     gaps.observe([this](const double c) {
       std::ostringstream state;

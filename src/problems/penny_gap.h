@@ -25,9 +25,6 @@ namespace penny
   // large for the memory is refused (check_model_size).
   void penny_gap_model_sections(Sections &sections, PennyGapModelParameters &model);
 
-  // The files a model reads: its gmsh mesh file, if any.
-  std::vector<std::string> model_input_files(const PennyGapModelParameters &model);
-
   // Throws InputError, naming the entries that make the model large, if it
   // would not fit in the memory of this run; `more` names further entries
   // that enlarged it (e.g. an adaptive refinement). Collective.
@@ -46,13 +43,40 @@ namespace penny
   // 'Peak tension P' and its a or R_p.
   void parabola_section(Sections &sections, LoadParameters &load);
 
-  // Load, for the searches: the summit p = P - r^2/(2 R_p) of the Bueckner
-  // parabola, its 'Summit radius R_p' and, where `peak_tension` is not null,
-  // its 'Peak tension P'.
-  void summit_section(Sections &sections, double &summit_radius, double *peak_tension);
-
   // J-integral: the outer radii of the rings (units of c), inside the domain.
   void ring_section(Sections &sections, std::vector<double> &ring_radii, const GeometryParameters &geometry);
+
+  // What every penny-gap scene reads: the model and its J-integral rings,
+  // and the face load where the scene solves one (`face_load` not null).
+  struct PennyGapInput
+  {
+    PennyGapModelParameters model;
+    std::vector<double>     ring_radii;
+
+    void sections(Sections &sections, LoadParameters *face_load = nullptr);
+  };
+
+  // What the adhesive searches read besides the model: the summit
+  // p = P - r^2/(2 R_p) of the Bueckner parabola (Load: 'Summit radius R_p'
+  // and, where `peak_tension` is not null, 'Peak tension P'), and K_Ic
+  // (Adhesion) of the model's material.
+  struct AdhesiveSummit
+  {
+    double summit_radius;             // R_p (m^2/Pa)
+    double critical_stress_intensity; // K_Ic (Pa m^1/2)
+
+    void sections(Sections &sections, const MaterialParameters &material, double *peak_tension = nullptr);
+  };
+
+  // What the scenes that search for adhesive gaps read: the penny gap and the
+  // adhesive summit of its material.
+  struct AdhesiveGapInput
+  {
+    PennyGapInput  gap;
+    AdhesiveSummit summit;
+
+    void sections(Sections &sections, double *peak_tension = nullptr);
+  };
 
   struct RingResult
   {
@@ -77,6 +101,14 @@ namespace penny
     std::string             solver;
   };
 
+  // The tables of one solved gap: K_I on every ring beside its closed form
+  // `exact` (ring radii in units of `ring_unit`), then `summary`, printed with
+  // a note where the FE K_I is negative (the faces would interpenetrate) and
+  // written as rings.csv and summary.csv. Returns the largest relative error
+  // of |K_I| and of the signed K_I over the rings.
+  double report_rings(const std::vector<RingResult> &rings, double exact, const std::string &ring_unit,
+                      const Table &summary, const ResultFolder &results, std::ostream &log);
+
   // Solve, J-integrals on the rings (radii in units of c) and closed forms on
   // a model already built (perhaps adaptively refined); the fields go to
   // `fields` unless it is null.
@@ -89,14 +121,14 @@ namespace penny
                                       const std::vector<double> &ring_radii, dealii::TimerOutput &timer);
 
   // What the scenes that search over gap radii share: a timer of the phases,
-  // the family of models (J on the ring `ring_radius` c), and a progress line
-  // as the solves go. Every model lives on one rank; a search of its own
+  // the family of models of the input (J on its last ring), and a progress
+  // line as the solves go. Every model lives on one rank; a search of its own
   // shares its models out over all ranks, and a sweep of independent searches
   // gives each rank its share of them (parallel/spread_over_ranks.h), each
   // search on its rank alone. The results do not depend on the number of ranks.
   struct PennyGapSearch
   {
-    PennyGapSearch(const PennyGapModelParameters &model, double ring_radius, std::ostream &log);
+    PennyGapSearch(const PennyGapInput &gap, std::ostream &log);
     PennyGapSearch(const PennyGapSearch &) = delete;
 
     // The closing rows of a search's summary: the FE solves of all ranks and

@@ -17,10 +17,9 @@ namespace penny
 {
   using namespace dealii;
 
-  void periodic_gap_model_sections(Sections &sections, PeriodicGapModelParameters &model,
-                                   std::vector<double> &ring_radii)
+  void PeriodicGapInput::sections(Sections &sections)
   {
-    material_section(sections, model.material);
+    elastic_model_sections(sections, model, true);
     sections.subsection("Periodic gap", [&](Entries &entries) {
       // Bounded so that no product the solver forms overflows, and the mesh,
       // whose coarse cells are at most lambda/4 wide, stays small.
@@ -42,16 +41,14 @@ namespace penny
                      "larger values give more cells per ring. Units: cell widths.");
       entries.numbers("Ring radii", ring_radii, {0.25, 0.5, 0.75}, interval("()", 0, 1),
                       "Outer radii of the J-integral domains around the tip, weight q = (1 - (d/rho)^2)^4; "
-                      "inside the domain for every c below 4 D/lambda too. The searches use the last. Units: "
-                      "min(c, lambda/2 - c).");
+                      "inside the domain for every c below 4 D/lambda too. The searches use the last. "
+                      "Units: min(c, lambda/2 - c).");
       // min(c, lambda/2 - c) is at most lambda/4: rings below 4 D/lambda stay above z = -D.
       const double largest = std::min(1., 4 * depth);
       for (const double rho : ring_radii)
         entries.require(rho < largest, "Ring radii", rho,
                         "(0, min(1, 4 D/lambda) = " + shortest(largest) + ")");
     });
-    finite_element_section(sections, model.degree, &model.levels_per_degree);
-    linear_solver_section(sections, model.linear_solver);
   }
 
   void gap_and_load_section(Sections &sections, GapAndLoad &gap)
@@ -61,12 +58,12 @@ namespace penny
       // contact narrower than 1e-6 lambda would need more quadtree levels than a mesh holds.
       entries.number("Gap half-width c/lambda", gap.gap_ratio, 0.2,
                      {"[1e-6, 0.5 - 1e-6]", [](const double x) { return x >= 1e-6 && x <= 0.5 - 1e-6; }},
-                     "Half-width of the gap, centred where the tension peaks; the contact half-width is a = "
-                     "lambda/2 - c. Units: lambda.");
+                     "Half-width of the gap, centred where the tension peaks; the contact half-width is a "
+                     "= lambda/2 - c. Units: lambda.");
       entries.number(
           "Peak tension p*", gap.peak_tension, 1e6, magnitude("Pa"),
-          "Amplitude of the full-contact pressure, p* = pi E' h/lambda for a sinusoid of amplitude "
-          "h. Units: Pa.");
+          "Amplitude of the full-contact pressure, p* = pi E' h/lambda for a sinusoid of amplitude h. "
+          "Units: Pa.");
       entries.number("Mean pressure p_bar/p*", gap.load_ratio, 0, interval("[]", -1e3, 1e3),
                      "Mean contact pressure (compressive positive); the gap faces carry t = p* cos(2 pi "
                      "x/lambda) - p_bar. Units: p*.");
@@ -124,8 +121,9 @@ namespace penny
     return results;
   }
 
-  PeriodicGapSearch::PeriodicGapSearch(const PeriodicGapModelParameters &model, const double ring_radius)
-      : timer(std::cout, TimerOutput::never, TimerOutput::wall_times), gaps({model, ring_radius}, timer)
+  PeriodicGapSearch::PeriodicGapSearch(const PeriodicGapInput &periodic)
+      : timer(std::cout, TimerOutput::never, TimerOutput::wall_times),
+        gaps({periodic.model, periodic.ring_radii.back()}, timer)
   {
   }
 

@@ -17,11 +17,17 @@
 
 namespace penny
 {
-  // Material, Periodic gap (the wavelength, depth, mesh and J-integral
-  // rings, in units of min(c, lambda/2 - c)), Finite element and Linear
-  // solver. The gap half-width is left to the scene.
-  void periodic_gap_model_sections(Sections &sections, PeriodicGapModelParameters &model,
-                                   std::vector<double> &ring_radii);
+  // What every periodic-gap scene reads: Material, Periodic gap (the
+  // wavelength, depth, mesh and J-integral rings, in units of
+  // min(c, lambda/2 - c)), Finite element and Linear solver. The gap
+  // half-width is the scene's.
+  struct PeriodicGapInput
+  {
+    PeriodicGapModelParameters model;
+    std::vector<double>        ring_radii;
+
+    void sections(Sections &sections);
+  };
 
   // One gap and its Bueckner tension t = p* cos(2 pi x/lambda) - p_bar.
   struct GapAndLoad
@@ -55,13 +61,13 @@ namespace penny
                                             dealii::TimerOutput              &timer);
 
   // What the scenes that search over the half-width share: a timer of the
-  // phases and the family of models (J on the ring `ring_radius`). Every
+  // phases and the family of models of the input (J on its last ring). Every
   // model lives on one rank; a search of its own shares its models out over
   // all ranks, and a sweep of independent searches gives each rank its share
   // of them, each search on its rank alone.
   struct PeriodicGapSearch
   {
-    PeriodicGapSearch(const PeriodicGapModelParameters &model, double ring_radius);
+    explicit PeriodicGapSearch(const PeriodicGapInput &periodic);
     PeriodicGapSearch(const PeriodicGapSearch &) = delete;
 
     // The closing rows of a search's summary: the FE solves of all ranks and

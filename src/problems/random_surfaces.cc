@@ -1,6 +1,8 @@
 #include "problems/random_surfaces.h"
 
 #include "input/input_error.h"
+#include "problems/rough_surface.h"
+#include "problems/solid.h"
 
 #include <cmath>
 #include <limits>
@@ -8,18 +10,19 @@
 
 namespace penny
 {
-  void random_surfaces_section(Sections &sections, RandomSurfaceParameters &surfaces)
+  void RandomSurfaceInput::sections(Sections &sections)
   {
+    material_section(sections, material);
+    roughness_section(sections, roughness);
     sections.subsection("Random surfaces", [&](Entries &entries) {
       entries.integer("Grid points per side", surfaces.n_points, 256u, 8u, 65536u,
                       "N of the periodic N x N grid; even. Units: none.");
       entries.require(surfaces.n_points % 2 == 0, "Grid points per side", surfaces.n_points,
                       "even numbers 8 ... 65536");
       entries.number(
-          "Period L/lambda0", surfaces.period, 1, interval("[)", 1, std::numeric_limits<double>::infinity()),
-          "Side of the periodic square in units of the longest wavelength lambda0 = 2 pi/q0 "
-          "(Roughness). The shortest wavelength lambda0/zeta must span at least 4 grid points. Units: "
-          "none.");
+          "Period L/lambda0", surfaces.period, 1, at_least(1),
+          "Side of the periodic square in units of the longest wavelength lambda0 = 2 pi/q0 (Roughness). "
+          "The shortest wavelength lambda0/zeta must span at least 4 grid points. Units: none.");
       entries.integer("Realisations", surfaces.n_realisations, 16u, 1u, 1000000u,
                       "Independent surfaces, spread over the MPI ranks. Units: none.");
       entries.integer(

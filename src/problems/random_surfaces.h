@@ -3,12 +3,14 @@
 // the mean over realisations with its standard error.
 #pragma once
 
+#include "fe/elasticity.h"
 #include "fourier/fourier_transform.h"
 #include "input/entries.h"
 #include "statistics/roughness.h"
 #include "statistics/summit_statistics.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace penny
@@ -22,8 +24,16 @@ namespace penny
     std::uint64_t seed;
   };
 
-  // Random surfaces.
-  void random_surfaces_section(Sections &sections, RandomSurfaceParameters &surfaces);
+  // What the scenes on sampled surfaces read: the solid (Material), the
+  // spectrum (Roughness) and the grid and realisations (Random surfaces).
+  struct RandomSurfaceInput
+  {
+    MaterialParameters      material;
+    RoughnessParameters     roughness;
+    RandomSurfaceParameters surfaces;
+
+    void sections(Sections &sections);
+  };
 
   // The square grid of side L = period 2 pi/q0 for a spectrum on q0 <= q <=
   // zeta q0; throws InputError naming Random surfaces/Grid points per side

@@ -5,7 +5,6 @@
 
 #include <cmath>
 #include <filesystem>
-#include <limits>
 
 namespace penny
 {
@@ -13,17 +12,15 @@ namespace penny
   {
     using Spectrum = RoughnessParameters::Spectrum;
     sections.subsection("Roughness", [&](Entries &entries) {
-      const double infinity = std::numeric_limits<double>::infinity();
       entries.choice(
           "Spectrum", roughness.spectrum, Spectrum::power_law,
           EnumNames<Spectrum>{{"power-law", Spectrum::power_law}, {"file", Spectrum::file}},
-          "Isotropic height PSD C(q): the paper's power law (H/2pi) (h0/q0)^2 (q/q0)^(-2(H+1)) on q0 "
-          "<= q <= zeta q0, or the table in 'Spectrum file'.");
+          "Isotropic height PSD C(q): the paper's power law (H/2pi) (h0/q0)^2 (q/q0)^(-2(H+1)) on q0 <= q "
+          "<= zeta q0, or the table in 'Spectrum file'.");
       entries.number("Hurst exponent H", roughness.hurst, 0.75, interval("()", 0, 1), "Units: none.");
-      entries.number("Long-wavelength cut-off q0", roughness.q0, 6283.185307179586,
-                     interval("()", 0, infinity),
+      entries.number("Long-wavelength cut-off q0", roughness.q0, 6283.185307179586, above(0),
                      "Smallest wavenumber of the power law, q0 = 2 pi/lambda0. Units: 1/m.");
-      entries.number("Magnification zeta", roughness.zeta, 1000, interval("()", 1, infinity),
+      entries.number("Magnification zeta", roughness.zeta, 1000, above(1),
                      "q1/q0, the bandwidth of the power law. Units: none.");
       bool from_ratio = true;
       entries.choice("Amplitude given by", from_ratio, true,
@@ -31,9 +28,8 @@ namespace penny
                      "h0/lambda0: h0 = (h0/lambda0) 2 pi/q0; rms height: h0 such that sqrt(m0) is the 'Rms "
                      "height'.");
       double ratio = 0, rms = 0;
-      entries.number("Amplitude h0/lambda0", ratio, 0.01, interval("()", 0, infinity), "Units: none.");
-      entries.number("Rms height", rms, 1e-6, interval("()", 0, infinity),
-                     "sqrt(m0) of the power law. Units: m.");
+      entries.number("Amplitude h0/lambda0", ratio, 0.01, above(0), "Units: none.");
+      entries.number("Rms height", rms, 1e-6, above(0), "sqrt(m0) of the power law. Units: m.");
       // m0 = h0^2 (1 - zeta^(-2H))/2 for the power law.
       roughness.amplitude = from_ratio
                                 ? ratio * 2 * M_PI / roughness.q0
@@ -44,9 +40,12 @@ namespace penny
           "(relative paths start at the parameter file's folder).");
     });
     sections.check([&] {
-      if (roughness.spectrum == Spectrum::file && !std::filesystem::is_regular_file(roughness.spectrum_file))
+      if (roughness.spectrum != Spectrum::file)
+        return;
+      if (!std::filesystem::is_regular_file(roughness.spectrum_file))
         throw InputError("Roughness/Spectrum file = " + in_quotes(roughness.spectrum_file) +
                          " does not exist (expected two columns q (1/m), C(q) (m^4))");
+      sections.input_file(roughness.spectrum_file);
     });
   }
 
@@ -75,10 +74,10 @@ namespace penny
       entries.choice(
           "Convention", area_load.convention_is_paper, true,
           EnumNames<bool>{{"paper", true}, {"consistent", false}},
-          "paper: the paper's normalisations, prefactor 3 pi R_p eta sqrt(V) = sqrt(2 pi) and "
-          "p0/sqrt(V) = zeta^theta, theta = (2/5)(2H - 1). consistent: V, eta, R_p and p0 from the "
-          "moments of the Roughness spectrum (each H and zeta below replacing its own), the Material "
-          "and the Adhesion sections.");
+          "paper: the paper's normalisations, prefactor 3 pi R_p eta sqrt(V) = sqrt(2 pi) and p0/sqrt(V) = "
+          "zeta^theta, theta = (2/5)(2H - 1). consistent: V, eta, R_p and p0 from the moments of the "
+          "Roughness spectrum (each H and zeta below replacing its own), the Material and the Adhesion "
+          "sections.");
       // Near full contact the gaps are isolated for p_bar of a few sqrt(V);
       // far beyond, the laws underflow to 0 or overflow.
       entries.number("Smallest mean pressure", area_load.smallest_mean_pressure, 0,

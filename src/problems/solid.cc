@@ -25,8 +25,8 @@ namespace penny
           "K_Ic: 'Critical stress intensity K_Ic' as given; G_c: K_Ic = sqrt(E' G_c) from 'Work of "
           "adhesion G_c' and the Material section.");
       entries.number("Critical stress intensity K_Ic", K_Ic, 1.28e6, magnitude("Pa m^1/2"),
-                     "Toughness of the interface: an adhesive gap is in equilibrium at K_I = K_Ic. Units: Pa "
-                     "m^1/2.");
+                     "Toughness of the interface: an adhesive gap is in equilibrium at K_I = K_Ic. Units: "
+                     "Pa m^1/2.");
       entries.number("Work of adhesion G_c", G_c, 0.1, magnitude("J/m^2"),
                      "Interface energy per area, used when the toughness is given by G_c. Units: J/m^2.");
       critical_stress_intensity = from_work ? std::sqrt(material.plane_strain_modulus() * G_c) : K_Ic;

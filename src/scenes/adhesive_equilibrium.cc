@@ -16,38 +16,31 @@ namespace penny
 {
   namespace
   {
-    class AdhesiveEquilibriumScene : public Scene
+    struct AdhesiveEquilibriumScene : Scene
     {
-    public:
       void parameters(Sections &sections) override
       {
-        penny_gap_model_sections(sections, model);
-        summit_section(sections, summit_radius, &peak_tension);
-        adhesion_section(sections, critical_stress_intensity, model.material);
-        ring_section(sections, ring_radii, model.geometry);
-        tolerance_section(sections, tolerance, "the relative error of the gap radius c_t");
+        input.sections(sections, &peak_tension);
         // The stable gap's search widens its bracket from c_min to at most
         // 2^21 c_min: a tension whose gap lies beyond is refused.
         sections.check([&] {
-          const double R_p = summit_radius, K_Ic = critical_stress_intensity;
+          const double R_p = input.summit.summit_radius, K_Ic = input.summit.critical_stress_intensity;
           const double largest = closed_form::adhesive_tension(
               std::pow(2., 20) * closed_form::c_min_factor * adhesion_length(R_p, K_Ic), R_p, K_Ic);
           const double shown =
               std::pow(10., std::floor(std::log10(largest)) - 2); // three digits, rounded down
-          require(
-              peak_tension <= largest, "Load/Peak tension P", peak_tension,
-              "[-1e30, " + shortest(std::floor(largest / shown) * shown) +
-                  "] Pa for this Summit radius R_p and Critical stress intensity K_Ic (the stable gap radius "
-                  "would exceed 2^20 c_min)");
+          require(peak_tension <= largest, "Load/Peak tension P", peak_tension,
+                  "[-1e30, " + shortest(std::floor(largest / shown) * shown) +
+                      "] Pa for this Summit radius R_p and Critical stress intensity K_Ic (the stable gap "
+                      "radius would exceed 2^20 c_min)");
         });
       }
 
-      std::vector<std::string> input_files() const override { return model_input_files(model); }
-
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        PennyGapSearch        search(model, ring_radii.back(), log);
-        const double          P = peak_tension, R_p = summit_radius, K_Ic = critical_stress_intensity;
+        PennyGapSearch search(input.gap, log);
+        const double   P = peak_tension, R_p = input.summit.summit_radius,
+                     K_Ic             = input.summit.critical_stress_intensity;
         const AdhesiveMinimum minimum = fe_adhesive_minimum(search.gaps, R_p, K_Ic, MPI_COMM_WORLD);
         const auto            c_t = fe_stable_gap_radius(search.gaps, P, R_p, K_Ic, minimum, MPI_COMM_WORLD);
         const auto            exact = closed_form::stable_gap_radius(P, R_p, K_Ic);
@@ -66,26 +59,23 @@ namespace penny
         else
           summary.add_row({"gap", "closed: P < p0, no gap survives (full contact)"});
         search.add_cost(summary);
-        log << "Adhesive equilibrium on the stable branch (K_I = K_Ic, c >= c_min), FE\n";
-        summary.print(log);
-        results.write_csv("adhesive-equilibrium.csv", summary);
+        publish(summary, "adhesive-equilibrium.csv", results, log,
+                "Adhesive equilibrium on the stable branch (K_I = K_Ic, c >= c_min), FE");
 
         if (c_t.has_value() != exact.has_value())
           return {false, std::string("FE and closed form disagree on whether the gap closes (FE: ") +
                              (c_t ? "open" : "closed") + ")"};
         if (!c_t)
           return {true, "FE and closed form agree: the gap closes"};
-        return verdict("relative error of c_t", relative_error(*c_t, *exact), tolerance);
+        return verdict(relative_error(*c_t, *exact));
       }
 
-    private:
-      PennyGapModelParameters model;
-      double                  summit_radius, peak_tension, critical_stress_intensity;
-      std::vector<double>     ring_radii;
-      double                  tolerance;
+      AdhesiveGapInput input;
+      double           peak_tension;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(AdhesiveEquilibriumScene, "adhesive-equilibrium",
-                       "the FE gap radius on the stable branch for the peak tension P (the paper's g)")
+                       "the FE gap radius on the stable branch for the peak tension P (the paper's g)",
+                       "relative error of the gap radius c_t")
 } // namespace penny

@@ -13,25 +13,15 @@ namespace penny
 {
   namespace
   {
-    class AdhesiveMinimumScene : public Scene
+    struct AdhesiveMinimumScene : Scene
     {
-    public:
-      void parameters(Sections &sections) override
-      {
-        penny_gap_model_sections(sections, model);
-        summit_section(sections, summit_radius, nullptr);
-        adhesion_section(sections, critical_stress_intensity, model.material);
-        ring_section(sections, ring_radii, model.geometry);
-        tolerance_section(sections, tolerance, "the relative error of psi");
-      }
-
-      std::vector<std::string> input_files() const override { return model_input_files(model); }
+      void parameters(Sections &sections) override { input.sections(sections); }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        PennyGapSearch        search(model, ring_radii.back(), log);
-        const double          R_p     = summit_radius;
-        const double          K_Ic    = critical_stress_intensity;
+        PennyGapSearch        search(input.gap, log);
+        const double          R_p     = input.summit.summit_radius;
+        const double          K_Ic    = input.summit.critical_stress_intensity;
         const AdhesiveMinimum minimum = fe_adhesive_minimum(search.gaps, R_p, K_Ic, MPI_COMM_WORLD);
         const double          psi     = minimum.tension / adhesion_tension(R_p, K_Ic);
         const double          c_hat   = minimum.gap_radius / adhesion_length(R_p, K_Ic);
@@ -49,20 +39,16 @@ namespace penny
         summary.add_row({"c_min relative error",
                          Table::Cell(relative_error(c_hat, closed_form::c_min_factor), error_digits)});
         search.add_cost(summary);
-        log << "Adhesive minimum: min over c of P(c) = [K_Ic + K_2(c)/(2 R_p)] / K_1(c), FE\n";
-        summary.print(log);
-        results.write_csv("adhesive-minimum.csv", summary);
-        return verdict("relative error of psi", relative_error(psi, closed_form::psi), tolerance);
+        publish(summary, "adhesive-minimum.csv", results, log,
+                "Adhesive minimum: min over c of P(c) = [K_Ic + K_2(c)/(2 R_p)] / K_1(c), FE");
+        return verdict(relative_error(psi, closed_form::psi));
       }
 
-    private:
-      PennyGapModelParameters model;
-      double                  summit_radius, critical_stress_intensity;
-      std::vector<double>     ring_radii;
-      double                  tolerance;
+      AdhesiveGapInput input;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(AdhesiveMinimumScene, "adhesive-minimum",
-                       "the minimum over c of the FE peak tension P(c) at K_I = K_Ic: psi and c_min")
+                       "the minimum over c of the FE peak tension P(c) at K_I = K_Ic: psi and c_min",
+                       "relative error of psi")
 } // namespace penny

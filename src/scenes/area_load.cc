@@ -19,33 +19,19 @@ namespace penny
 {
   namespace
   {
-    class AreaLoadScene : public Scene
+    struct AreaLoadScene : Scene
     {
-    public:
       void parameters(Sections &sections) override { rough_surface_sections(sections, surface); }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
         const auto &range = surface.area_load;
         double      worst = 0;
-        Table       table({{"H"},
-                           {"zeta"},
-                           {"p0/sqrtV"},
-                           {"p_bar/sqrtV"},
-                           {"A_nc linear closed form"},
-                           {"A_nc linear integral"},
-                           {"A_nc exact g"},
-                           {"A_nc adhesionless"},
-                           {"A_c Persson-type"},
-                           {"A_c Persson-type adhesionless"},
-                           {"A_nc linear > 1"},
-                           {"A_nc exact g > 1"}});
-        Table       summary({{"H"},
-                             {"zeta"},
-                             {"p0/sqrt(V)"},
-                             {"prefactor"},
-                             {"A_nc(p_bar = 0), linear law"},
-                             {"A_nc(p_bar = 0), exact g"}});
+        Table       table({"H", "zeta", "p0/sqrtV", "p_bar/sqrtV", "A_nc linear closed form",
+                           "A_nc linear integral", "A_nc exact g", "A_nc adhesionless", "A_c Persson-type",
+                           "A_c Persson-type adhesionless", "A_nc linear > 1", "A_nc exact g > 1"});
+        Table       summary({"H", "zeta", "p0/sqrt(V)", "prefactor", "A_nc(p_bar = 0), linear law",
+                             "A_nc(p_bar = 0), exact g"});
         for (const double hurst : range.hurst_exponents)
           for (const double zeta : range.magnifications)
             {
@@ -81,11 +67,11 @@ namespace penny
         return {};
       }
 
-    private:
       RoughSurfaceProblem surface;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(AreaLoadScene, "area-load",
-                       "A_nc/A_0 and A_c/A_0 against p_bar/sqrt(V) for each H and zeta (paper Figs. 4 and 5)")
+                       "A_nc/A_0 and A_c/A_0 against p_bar/sqrt(V) for each H and zeta (paper Figs. 4 and 5)",
+                       "")
 } // namespace penny

@@ -14,7 +14,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 namespace penny
@@ -36,14 +35,12 @@ namespace penny
       return (n * sxy - sx * sy) / (n * sxx - sx * sx);
     }
 
-    class BemWestergaardScene : public Scene
+    struct BemWestergaardScene : Scene
     {
-    public:
       void parameters(Sections &sections) override
       {
         material_section(sections, material);
         sections.subsection("BEM Westergaard", [&](Entries &entries) {
-          const double infinity = std::numeric_limits<double>::infinity();
           entries.number("Wavelength lambda", wavelength, 1e-3, magnitude("m"),
                          "Period of the sinusoid. Units: m.");
           entries.number("Amplitude h0", amplitude, 1e-6, magnitude("m"),
@@ -51,8 +48,8 @@ namespace penny
           std::vector<double> sizes;
           entries.numbers(
               "Grid sizes", sizes, {64, 128, 256, 512, 1024}, interval("[]", 16, 1 << 20),
-              "Grid points per wavelength, even and increasing (the grid is N x 4, the surface does "
-              "not depend on y). Units: none.");
+              "Grid points per wavelength, even and increasing (the grid is N x 4, the surface does not "
+              "depend on y). Units: none.");
           grid_sizes.assign(sizes.begin(), sizes.end());
           for (std::size_t k = 0; k < sizes.size(); ++k)
             entries.require(sizes[k] == grid_sizes[k] && grid_sizes[k] % 2 == 0 &&
@@ -60,10 +57,10 @@ namespace penny
                             "Grid sizes", sizes[k], "even whole numbers, increasing");
           entries.numbers("Load ratios", load_ratios, {0.2, 0.5, 0.8}, interval("()", 0, 1),
                           "p_bar/p* of the solves. Units: none.");
-          entries.number("Solver tolerance", solver_tolerance, 1e-12, interval("()", 0, infinity),
+          entries.number("Solver tolerance", solver_tolerance, 1e-12, above(0),
                          "Residual of the constrained CG, in units of the rms height. Units: none.");
           entries.number(
-              "Half-width tolerance", half_width_tolerance, 1e-3, interval("()", 0, infinity),
+              "Half-width tolerance", half_width_tolerance, 1e-3, above(0),
               "The verdict: |a - a_Westergaard|/lambda at the finest grid, every load. Units: none.");
         });
       }
@@ -74,14 +71,14 @@ namespace penny
         const double lambda = bem.wavelength;
         const double E_star = material.plane_strain_modulus();
         const double p_star = M_PI * E_star * bem.amplitude / lambda;
-        Table        table({{"points per lambda"},
-                            {"p_bar/p*"},
+        Table        table({"points per lambda",
+                            "p_bar/p*",
                             {"a/lambda exact", {8}},
                             {"a/lambda BEM", {8}},
                             {"|a error|/lambda", {2, true}},
                             {"|a error|/lambda contact points", {2, true}},
                             {"max |p error|/p* inside", {2, true}},
-                            {"iterations"},
+                            "iterations",
                             {"wall time (s)", {3}}});
         // Per load: log N and the logs of both errors, for the fitted rates.
         std::vector<std::vector<double>> log_n(bem.load_ratios.size()), log_error(bem.load_ratios.size()),
@@ -136,20 +133,16 @@ namespace penny
           }
         // The rate r of error ~ N^-r: least squares over all grids (the sub-grid
         // half-width error does not fall monotonically from one grid to the next).
-        Table rates({{"p_bar/p*"}, {"half-width rate", {3}}, {"pressure rate", {3}}});
+        Table rates({"p_bar/p*", {"half-width rate", {3}}, {"pressure rate", {3}}});
         for (std::size_t l = 0; l < bem.load_ratios.size(); ++l)
           rates.add_row({bem.load_ratios[l], -fitted_slope(log_n[l], log_error[l]),
                          -fitted_slope(log_n[l], log_pressure_error[l])});
-        results.write_csv("bem-westergaard.csv", table);
-        results.write_csv("bem-westergaard-rates.csv", rates);
-        log << "FFT boundary elements on Westergaard's sinusoid h = 2 h0 sin^2(pi x/lambda): contact "
-               "half-width "
-               "(sub-grid, from the gap beside the edge; and from the contact points alone) and pressure "
-               "against "
-               "p_bar/p* = sin^2(pi a/lambda)\n";
-        table.print(log);
-        log << "Rates r of error ~ N^-r, least squares over the grids:\n";
-        rates.print(log);
+        publish(table, "bem-westergaard.csv", results, log,
+                "FFT boundary elements on Westergaard's sinusoid h = 2 h0 sin^2(pi x/lambda): contact "
+                "half-width (sub-grid, from the gap beside the edge; and from the contact points alone) and "
+                "pressure against p_bar/p* = sin^2(pi a/lambda)");
+        publish(rates, "bem-westergaard-rates.csv", results, log,
+                "Rates r of error ~ N^-r, least squares over the grids:");
         log << "Tables: bem-westergaard.csv, bem-westergaard-rates.csv in " << results.directory().string()
             << "/\n";
 
@@ -162,7 +155,6 @@ namespace penny
         return {worst_at_finest <= bem.half_width_tolerance, message.str()};
       }
 
-    private:
       MaterialParameters        material;
       double                    wavelength, amplitude; // lambda (m), h0 (m) of h = 2 h0 sin^2(pi x/lambda)
       std::vector<unsigned int> grid_sizes;            // points per wavelength
@@ -174,6 +166,7 @@ namespace penny
 
   PENNY_REGISTER_SCENE(
       BemWestergaardScene, "bem-westergaard",
-      "the FFT boundary-element contact solver on Westergaard's sinusoid: half-width and pressure "
-      "against grid size")
+      "the FFT boundary-element contact solver on Westergaard's sinusoid: half-width and pressure against "
+      "grid size",
+      "")
 } // namespace penny

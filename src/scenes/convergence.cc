@@ -106,14 +106,11 @@ namespace penny
       double              wall_time;
     };
 
-    class ConvergenceScene : public Scene
+    struct ConvergenceScene : Scene
     {
-    public:
       void parameters(Sections &sections) override
       {
-        penny_gap_model_sections(sections, model);
-        face_load_section(sections, load, model.geometry);
-        ring_section(sections, ring_radii, model.geometry);
+        gap.sections(sections, &load);
         sections.subsection("Convergence", [&](Entries &entries) {
           entries.choice(
               "Strategy", sequence.strategy, Strategy::tip_grading,
@@ -122,20 +119,20 @@ namespace penny
                                   {"degree", Strategy::degree},
                                   {"domain-size", Strategy::domain_size},
                                   {"adaptive", Strategy::adaptive}},
-              "The sequence of the convergence scene: uniform-h, one more global refinement per cycle "
-              "of the scene's mesh; tip-grading, 'Tip levels step' more tip levels per cycle from "
-              "'First tip levels'; degree, degree 1 to 4 on the scene's mesh; domain-size, R/c = H/c "
-              "from 10 to 1e4 at the scene's near-tip mesh; adaptive, from the mesh with 'First tip "
-              "levels', each cycle refines the 'Refined fraction' of cells with the largest Kelly error "
-              "indicators of the displacement.");
+              "The sequence of the convergence scene: uniform-h, one more global refinement per cycle of "
+              "the scene's mesh; tip-grading, 'Tip levels step' more tip levels per cycle from 'First tip "
+              "levels'; degree, degree 1 to 4 on the scene's mesh; domain-size, R/c = H/c from 10 to 1e4 "
+              "at the scene's near-tip mesh; adaptive, from the mesh with 'First tip levels', each cycle "
+              "refines the 'Refined fraction' of cells with the largest Kelly error indicators of the "
+              "displacement.");
           entries.integer("Cycles", sequence.cycles, 4u, 1u, 30u, "Number of discretisations. Units: none.");
           entries.integer("First tip levels", sequence.first_tip_levels, 4u, 0u, 40u,
                           "tip-grading and adaptive: levels of cycle 0. Units: none.");
           entries.integer("Tip levels step", sequence.tip_levels_step, 4u, 1u, 20u,
                           "tip-grading: levels added per cycle. Units: none.");
           entries.number("Refined fraction", sequence.refined_fraction, 0.1, interval("(]", 0, 1),
-                         "adaptive: share of the cells, those with the largest Kelly indicators, refined per "
-                         "cycle. Units: none.");
+                         "adaptive: share of the cells, those with the largest Kelly indicators, refined "
+                         "per cycle. Units: none.");
           if (sequence.strategy == Strategy::degree)
             entries.require(sequence.cycles <= 4, "Cycles", sequence.cycles, "[1, 4] for Strategy = degree");
           if (sequence.strategy == Strategy::tip_grading)
@@ -146,8 +143,6 @@ namespace penny
         sections.check([&] { check_cycle_sizes(); });
       }
 
-      std::vector<std::string> input_files() const override { return model_input_files(model); }
-
       // Every model lives on one rank, so each wall time is that of one core
       // (other ranks' cycles run beside it on the other cores) and the table
       // is the same on any number of ranks. The cycles are spread over the
@@ -155,7 +150,7 @@ namespace penny
       // mesh of cycle k - 1: it is one piece of work, its cycles in turn on one rank.
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        const auto                    &radii  = ring_radii;
+        const auto                    &radii  = gap.ring_radii;
         const std::vector<std::string> phases = {"mesh",  "setup",      "assembly",
                                                  "solve", "J-integral", "closed form"};
         const Table::Format            digits{12, false};
@@ -173,7 +168,7 @@ namespace penny
         Table table(columns);
 
         const bool adaptive = sequence.strategy == Strategy::adaptive;
-        const auto base     = on_one_rank(model);
+        const auto base     = on_one_rank(gap.model);
 
         // One timer for the cycles of a rank; a cycle's phases are the
         // differences of its totals, so an adaptive refinement counts towards the
@@ -247,7 +242,7 @@ namespace penny
         else
           measured = spread_over_ranks(MPI_COMM_WORLD, sequence.cycles, cycle);
 
-        const std::string           solver = solver_name(model.linear_solver, MPI_COMM_SELF);
+        const std::string           solver = solver_name(gap.model.linear_solver, MPI_COMM_SELF);
         std::vector<ConvergenceRow> rows;
         for (unsigned int k = 0; k < sequence.cycles; ++k)
           {
@@ -276,12 +271,10 @@ namespace penny
             rows.push_back(row);
           }
         log << '\n';
-        table.print(log);
-        results.write_csv("convergence.csv", table);
+        publish(table, "convergence.csv", results, log);
         return {};
       }
 
-    private:
       // Every cycle's model must fit, each built on one rank; the cycles of
       // the adaptive sequence are checked as they refine (refinement_check).
       void check_cycle_sizes() const
@@ -289,7 +282,7 @@ namespace penny
         const unsigned int checked = sequence.strategy == Strategy::adaptive ? 1 : sequence.cycles;
         for (unsigned int k = 0; k < checked; ++k)
           in_cycle(k, [&] {
-            const PennyGapModelParameters cycle = cycle_model(on_one_rank(model), sequence, k).first;
+            const PennyGapModelParameters cycle = cycle_model(on_one_rank(gap.model), sequence, k).first;
             check_model_size(cycle, model_cells(cycle));
           });
       }
@@ -298,7 +291,7 @@ namespace penny
       void refinement_check(const unsigned int k, const double cells) const
       {
         in_cycle(k, [&] {
-          check_model_size(on_one_rank(model),
+          check_model_size(on_one_rank(gap.model),
                            PennyGapModel::cells_after_refinement(cells, sequence.refined_fraction),
                            ", Convergence/Refined fraction = " + shortest(sequence.refined_fraction) +
                                " (adaptive cycles)");
@@ -319,13 +312,12 @@ namespace penny
           }
       }
 
-      PennyGapModelParameters model;
-      LoadParameters          load;
-      std::vector<double>     ring_radii;
-      ConvergenceParameters   sequence;
+      PennyGapInput         gap;
+      LoadParameters        load;
+      ConvergenceParameters sequence;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(ConvergenceScene, "convergence",
-                       "the penny-gap solve over the sequence of discretisations in 'Convergence'")
+                       "the penny-gap solve over the sequence of discretisations in 'Convergence'", "")
 } // namespace penny

@@ -16,44 +16,36 @@
 #include "statistics/contact_area.h"
 
 #include <cmath>
-#include <limits>
 
 namespace penny
 {
   namespace
   {
-    class FeGapAreaScene : public Scene
+    struct FeGapAreaScene : Scene
     {
-    public:
       void parameters(Sections &sections) override
       {
-        penny_gap_model_sections(sections, model);
-        summit_section(sections, summit_radius, nullptr);
-        adhesion_section(sections, critical_stress_intensity, model.material);
-        ring_section(sections, ring_radii, model.geometry);
+        input.sections(sections);
         area_load_section(sections, area_load);
         sections.subsection("FE gap area", [&](Entries &entries) {
           entries.number(
-              "p0/sqrt(V)", adhesion_ratio, 1, interval("()", 0, std::numeric_limits<double>::infinity()),
-              "Adhesion of the gap population; sqrt(V) = p0/this, with p0 from Load/Summit radius R_p "
-              "and the Adhesion section. Units: none.");
+              "p0/sqrt(V)", adhesion_ratio, 1, above(0),
+              "Adhesion of the gap population; sqrt(V) = p0/this, with p0 from Load/Summit radius R_p and "
+              "the Adhesion section. Units: none.");
           entries.integer(
               "Tabulated tensions", n_tabulated_tensions, 20u, 3u, 200u,
-              "FE gap radii at this many peak tensions P = p0 + t^2 sqrt(V), Chebyshev points in t. "
-              "Units: none.");
+              "FE gap radii at this many peak tensions P = p0 + t^2 sqrt(V), Chebyshev points in t. Units: "
+              "none.");
         });
-        tolerance_section(sections, tolerance, "the largest |A_nc(FE g)/A_nc(closed-form g) - 1|");
       }
-
-      std::vector<std::string> input_files() const override { return model_input_files(model); }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        PennyGapSearch search(model, ring_radii.back(), log);
+        PennyGapSearch search(input.gap, log);
         const auto    &range    = area_load;
         const double   adhesion = adhesion_ratio;
-        const double   R_p      = summit_radius;
-        const double   K_Ic     = critical_stress_intensity;
+        const double   R_p      = input.summit.summit_radius;
+        const double   K_Ic     = input.summit.critical_stress_intensity;
         const double   p0       = closed_form::psi * adhesion_tension(R_p, K_Ic);
         const double   sqrt_V   = p0 / adhesion;
         const auto     minimum  = fe_adhesive_minimum(search.gaps, R_p, K_Ic, MPI_COMM_WORLD);
@@ -67,7 +59,7 @@ namespace penny
         const auto   exact_P = chebyshev_tensions(exact_gaps.adhesion, t_max, n_tensions);
         const auto   exact   = exact_gap_law(exact_gaps.adhesion);
         std::vector<double> fe_areas, exact_areas;
-        Table gap_table({{"P/sqrtV"}, {"c_t FE (m)"}, {"c_t closed form (m)"}, {"relative error"}});
+        Table               gap_table({"P/sqrtV", "c_t FE (m)", "c_t closed form (m)", "relative error"});
         // P = p0 + t^2 sqrt(V): exactly the FE p0 at t = 0, whose gap is the minimum's.
         const auto tension = [&](const unsigned int j) {
           return minimum.tension + (fe_P[j] - fe_gaps.adhesion) * sqrt_V;
@@ -90,11 +82,8 @@ namespace penny
         const auto exact_table = tabulated_gap_law(exact_gaps.adhesion, t_max, exact_areas);
 
         double worst = 0, worst_table = 0;
-        Table  table({{"p_bar/sqrtV"},
-                      {"A_nc FE g"},
-                      {"A_nc closed-form g"},
-                      {"A_nc closed-form g tabulated"},
-                      {"relative difference"}});
+        Table  table({"p_bar/sqrtV", "A_nc FE g", "A_nc closed-form g", "A_nc closed-form g tabulated",
+                      "relative difference"});
         for (unsigned int i = 0; i < range.n_points; ++i)
           {
             const double p_bar     = range.mean_pressure(i);
@@ -122,20 +111,17 @@ namespace penny
             << "convention: paper prefactor sqrt(2 pi) (the comparison is a ratio, free of the prefactor)\n";
         summary.print(log);
         log << "Tables: " << results.directory().string() << "/fe-gap-area.csv, fe-gap-table.csv\n";
-        return verdict("largest |A_nc(FE g)/A_nc(closed-form g) - 1|", worst, tolerance);
+        return verdict(worst);
       }
 
-    private:
-      PennyGapModelParameters model;
-      double                  summit_radius, critical_stress_intensity;
-      std::vector<double>     ring_radii;
-      AreaLoadParameters      area_load;
-      double                  adhesion_ratio;
-      unsigned int            n_tabulated_tensions;
-      double                  tolerance;
+      AdhesiveGapInput   input;
+      AreaLoadParameters area_load;
+      double             adhesion_ratio;
+      unsigned int       n_tabulated_tensions;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(FeGapAreaScene, "fe-gap-area",
-                       "the area-load curve with the FE gap function g beside the closed-form g's")
+                       "the area-load curve with the FE gap function g beside the closed-form g's",
+                       "largest |A_nc(FE g)/A_nc(closed-form g) - 1|")
 } // namespace penny

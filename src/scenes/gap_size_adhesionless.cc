@@ -11,22 +11,17 @@ namespace penny
 {
   namespace
   {
-    class GapSizeScene : public Scene
+    struct GapSizeScene : Scene
     {
-    public:
       void parameters(Sections &sections) override
       {
-        penny_gap_model_sections(sections, model);
+        gap.sections(sections);
         parabola_section(sections, load);
-        ring_section(sections, ring_radii, model.geometry);
-        tolerance_section(sections, tolerance, "the relative error of c/a");
       }
-
-      std::vector<std::string> input_files() const override { return model_input_files(model); }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        PennyGapSearch search(model, ring_radii.back(), log);
+        PennyGapSearch search(gap, log);
         const double   a = load.tension_radius;
         const double   c = fe_adhesionless_gap_radius(search.gaps, load.peak_tension, a, MPI_COMM_WORLD);
 
@@ -38,20 +33,17 @@ namespace penny
             {"c/a exact, sqrt(3/2)", Table::Cell(closed_form::adhesionless_c_over_a, all_digits)});
         summary.add_row({"relative error", Table::Cell(error, error_digits)});
         search.add_cost(summary);
-        log << "Adhesionless gap size: FE K_I(c) = 0 for the parabola P (1 - r^2/a^2)\n";
-        summary.print(log);
-        results.write_csv("gap-size.csv", summary);
-        return verdict("relative error of c/a", error, tolerance);
+        publish(summary, "gap-size.csv", results, log,
+                "Adhesionless gap size: FE K_I(c) = 0 for the parabola P (1 - r^2/a^2)");
+        return verdict(error);
       }
 
-    private:
-      PennyGapModelParameters model;
-      LoadParameters          load;
-      std::vector<double>     ring_radii;
-      double                  tolerance;
+      PennyGapInput  gap;
+      LoadParameters load;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(GapSizeScene, "gap-size-adhesionless",
-                       "the gap radius where the FE K_I of the parabola (P, a) vanishes: c/a = sqrt(3/2)")
+                       "the gap radius where the FE K_I of the parabola (P, a) vanishes: c/a = sqrt(3/2)",
+                       "relative error of c/a")
 } // namespace penny

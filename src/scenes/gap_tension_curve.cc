@@ -10,42 +10,31 @@
 #include "scenes/scene.h"
 
 #include <cmath>
-#include <limits>
 
 namespace penny
 {
   namespace
   {
-    class GapTensionCurveScene : public Scene
+    struct GapTensionCurveScene : Scene
     {
-    public:
       void parameters(Sections &sections) override
       {
-        penny_gap_model_sections(sections, model);
-        summit_section(sections, summit_radius, nullptr);
-        adhesion_section(sections, critical_stress_intensity, model.material);
-        ring_section(sections, ring_radii, model.geometry);
+        input.sections(sections);
         sections.subsection("Gap-tension curve", [&](Entries &entries) {
-          const double infinity = std::numeric_limits<double>::infinity();
-          entries.number("Smallest c_hat", smallest_c_hat, 0.3, interval("()", 0, infinity),
-                         "Smallest c/c_min. Units: none.");
-          entries.number("Largest c_hat", largest_c_hat, 4, interval("()", 0, infinity),
-                         "Largest c/c_min. Units: none.");
+          entries.number("Smallest c_hat", smallest_c_hat, 0.3, above(0), "Smallest c/c_min. Units: none.");
+          entries.number("Largest c_hat", largest_c_hat, 4, above(0), "Largest c/c_min. Units: none.");
           entries.require(largest_c_hat > smallest_c_hat, "Largest c_hat", largest_c_hat,
                           "(Smallest c_hat, inf)");
           entries.integer("Number of points", n_points, 24u, 2u, 1000u,
                           "Points, evenly spaced in c_hat. Units: none.");
         });
-        tolerance_section(sections, tolerance, "the largest relative error of p_hat");
       }
-
-      std::vector<std::string> input_files() const override { return model_input_files(model); }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        PennyGapSearch search(model, ring_radii.back(), log);
-        const double   R_p   = summit_radius;
-        const double   K_Ic  = critical_stress_intensity;
+        PennyGapSearch search(input.gap, log);
+        const double   R_p   = input.summit.summit_radius;
+        const double   K_Ic  = input.summit.critical_stress_intensity;
         const double   c_min = closed_form::c_min_factor * adhesion_length(R_p, K_Ic);
         const double   p0    = closed_form::psi * adhesion_tension(R_p, K_Ic);
 
@@ -73,25 +62,21 @@ namespace penny
             worst                      = std::max(worst, relative_error(p_fe, exact));
             table.add_row({c_hat, p_fe, exact, linear, relative_error(p_fe, exact)});
           }
-        results.write_csv("gap-tension-curve.csv", table);
-        table.print(log);
+        publish(table, "gap-tension-curve.csv", results, log);
         Table summary = Table::summary();
         summary.add_row({"largest relative error", Table::Cell(worst, Table::Format{3, true})});
         search.add_cost(summary);
         summary.print(log);
-        return verdict("largest relative error of p_hat", worst, tolerance);
+        return verdict(worst);
       }
 
-    private:
-      PennyGapModelParameters model;
-      double                  summit_radius, critical_stress_intensity;
-      std::vector<double>     ring_radii;
-      double                  smallest_c_hat, largest_c_hat;
-      unsigned int            n_points;
-      double                  tolerance;
+      AdhesiveGapInput input;
+      double           smallest_c_hat, largest_c_hat;
+      unsigned int     n_points;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(GapTensionCurveScene, "gap-tension-curve",
-                       "p_hat(c_hat) from FE beside (c_hat^2 + 4/sqrt(c_hat))/5 (paper Fig. 2)")
+                       "p_hat(c_hat) from FE beside (c_hat^2 + 4/sqrt(c_hat))/5 (paper Fig. 2)",
+                       "largest relative error of p_hat")
 } // namespace penny

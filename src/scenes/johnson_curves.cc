@@ -12,7 +12,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 namespace penny
@@ -21,37 +20,26 @@ namespace penny
   {
     const Table::Format all_digits{16, false}, error_digits{3, true};
 
-    // A number as a column name shows it: 0.2.
-    std::string name_of(const double value)
+    struct JohnsonCurvesScene : Scene
     {
-      std::ostringstream text;
-      text << value;
-      return text.str();
-    }
-
-    class JohnsonCurvesScene : public Scene
-    {
-    public:
       void parameters(Sections &sections) override
       {
-        periodic_gap_model_sections(sections, model, ring_radii);
+        periodic.sections(sections);
         sections.subsection("Johnson curves", [&](Entries &entries) {
-          entries.numbers("Johnson parameters alpha", alphas, {0, 0.2, 0.4, 0.6},
-                          interval("[)", 0, std::numeric_limits<double>::infinity()),
+          entries.numbers("Johnson parameters alpha", alphas, {0, 0.2, 0.4, 0.6}, at_least(0),
                           "alpha = K_Ic/(p* sqrt(lambda)), one curve each (Johnson's alpha^2 = 2 lambda "
                           "dgamma/(pi^2 E* h^2)). Units: none.");
           entries.integer(
               "Number of points", n_points, 24u, 1u, 1000u,
-              "Contact half-widths a/lambda = i/(2 (n + 1)), i = 1 ... n; each is one FE solve of the "
-              "two unit loads, shared by every alpha. Units: none.");
+              "Contact half-widths a/lambda = i/(2 (n + 1)), i = 1 ... n; each is one FE solve of the two "
+              "unit loads, shared by every alpha. Units: none.");
         });
-        tolerance_section(sections, tolerance, "the largest |p_bar/p* FE - Johnson|");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        PeriodicGapSearch                                  search(model, ring_radii.back());
-        const double                                       lambda = model.wavelength;
+        PeriodicGapSearch                                  search(periodic);
+        const double                                       lambda = periodic.model.wavelength;
         Table                                              points({{"alpha", Table::Format{4, false}},
                                                                    {"a/lambda", Table::Format{6, false}},
                                                                    {"p_bar/p* FE", all_digits},
@@ -84,7 +72,7 @@ namespace penny
         // 400 closed-form points in (0, 1/2) per alpha.
         std::vector<Table::Column> columns = {{"a/lambda"}};
         for (const double alpha : alphas)
-          columns.push_back({"p_bar/p* alpha=" + name_of(alpha)});
+          columns.push_back({"p_bar/p* alpha=" + Table::label(alpha)});
         Table closed_form(columns);
         for (unsigned int i = 1; i < 400; ++i)
           {
@@ -95,11 +83,8 @@ namespace penny
           }
         results.write_csv("johnson-closed-form.csv", closed_form);
 
-        Table extremes({{"alpha"},
-                        {"jump into contact a/lambda"},
-                        {"jump into contact p_bar/p*"},
-                        {"pull-off a/lambda"},
-                        {"pull-off p_bar/p*"}});
+        Table extremes({"alpha", "jump into contact a/lambda", "jump into contact p_bar/p*",
+                        "pull-off a/lambda", "pull-off p_bar/p*"});
         for (const double alpha : alphas)
           if (alpha < periodic_array::largest_alpha_with_extremes())
             {
@@ -108,34 +93,31 @@ namespace penny
               extremes.add_row(
                   {alpha, jump.contact_ratio, jump.load_ratio, pull.contact_ratio, pull.load_ratio});
             }
-        results.write_csv("johnson-extremes.csv", extremes);
 
-        log << "Johnson's adhesive sinusoid from FE: p_bar/p* = [K_cosine - alpha sqrt(lambda)]/K_uniform at "
-               "K_I = K_Ic, beside sin^2(pi a/lambda) - alpha sqrt(tan(pi a/lambda))\n";
+        log << "Johnson's adhesive sinusoid from FE: p_bar/p* = [K_cosine - alpha sqrt(lambda)]/K_uniform "
+               "at K_I = K_Ic, beside sin^2(pi a/lambda) - alpha sqrt(tan(pi a/lambda))\n";
         Table summary = Table::summary();
         for (unsigned int k = 0; k < alphas.size(); ++k)
-          summary.add_row({"largest |p_bar/p* FE - Johnson|, alpha = " + name_of(alphas[k]),
+          summary.add_row({"largest |p_bar/p* FE - Johnson|, alpha = " + Table::label(alphas[k]),
                            Table::Cell(worst[k], error_digits)});
         search.add_cost(summary);
         summary.print(log);
-        log << "Extremes of the closed form (jump into contact, pull-off):\n";
-        extremes.print(log);
+        publish(extremes, "johnson-extremes.csv", results, log,
+                "Extremes of the closed form (jump into contact, pull-off):");
         log << "Tables: " << results.directory().string() << "/johnson-curves.csv, johnson-closed-form.csv, "
             << "johnson-extremes.csv\n";
-        return verdict("largest error of p_bar/p*", *std::max_element(worst.begin(), worst.end()), tolerance);
+        return verdict(*std::max_element(worst.begin(), worst.end()));
       }
 
-    private:
-      PeriodicGapModelParameters model;
-      std::vector<double>        ring_radii;
-      std::vector<double>        alphas;
-      unsigned int               n_points;
-      double                     tolerance;
+      PeriodicGapInput    periodic;
+      std::vector<double> alphas;
+      unsigned int        n_points;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(
       JohnsonCurvesScene, "johnson-curves",
-      "Johnson's adhesive curves p_bar/p*(a/lambda) from FE roots of K_I = K_Ic beside the closed "
-      "form (paper Fig. 1 from FE)")
+      "Johnson's adhesive curves p_bar/p*(a/lambda) from FE roots of K_I = K_Ic beside the closed form "
+      "(paper Fig. 1 from FE)",
+      "largest |p_bar/p* FE - Johnson|")
 } // namespace penny

@@ -19,9 +19,8 @@ namespace penny
 {
   namespace
   {
-    class MagnificationScalingScene : public Scene
+    struct MagnificationScalingScene : Scene
     {
-    public:
       void parameters(Sections &sections) override
       {
         area_load_section(sections, area_load);
@@ -40,10 +39,10 @@ namespace penny
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
         double worst = 0;
-        Table  table({{"H"},
-                      {"theta (2/5)(2H-1)"},
-                      {"theta fit paper"},
-                      {"theta fit consistent"},
+        Table  table({"H",
+                      "theta (2/5)(2H-1)",
+                      "theta fit paper",
+                      "theta fit consistent",
                       {"largest |fit - theta|", Table::Format{2, true}}});
         for (const double hurst : area_load.hurst_exponents)
           {
@@ -56,22 +55,19 @@ namespace penny
             worst              = std::max(worst, error);
             table.add_row({hurst, theta, fits[0], fits[1], error});
           }
-        results.write_csv("magnification-scaling.csv", table);
         log << "Magnification exponent: p0/sqrt(V) ~ zeta^theta, least-squares fit of the moments' values "
-               "over "
-               "zeta in ["
+               "over zeta in ["
             << fit[0] << ", " << fit[1] << "]\n";
-        table.print(log);
+        publish(table, "magnification-scaling.csv", results, log);
         log << "Table: " << results.directory().string() << "/magnification-scaling.csv\n";
         return {};
       }
 
-    private:
       AreaLoadParameters  area_load;
       std::vector<double> fit;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(MagnificationScalingScene, "magnification-scaling",
-                       "theta of p0/sqrt(V) ~ zeta^theta fitted from the moments, for each H")
+                       "theta of p0/sqrt(V) ~ zeta^theta fitted from the moments, for each H", "")
 } // namespace penny

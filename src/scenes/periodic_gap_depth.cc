@@ -17,21 +17,21 @@ namespace penny
   {
     using dealii::TimerOutput;
 
-    class PeriodicGapDepthScene : public Scene
+    struct PeriodicGapDepthScene : Scene
     {
-    public:
       void parameters(Sections &sections) override
       {
-        periodic_gap_model_sections(sections, model, ring_radii);
+        periodic.sections(sections);
         gap_and_load_section(sections, gap);
         sections.subsection("Depth study", [&](Entries &entries) {
           entries.numbers(
               "Depths", depths, {0.25, 0.5, 0.75, 1, 1.5, 2, 3}, interval("(]", 0, 100, "lambda"),
-              "Depths D of the truncated solid, one solve each, in place of 'Periodic gap/Depth D'. "
-              "Units: lambda.");
+              "Depths D of the truncated solid, one solve each, in place of 'Periodic gap/Depth D'. Units: "
+              "lambda.");
           if (!entries.reading())
             return;
-          const double largest_ring = *std::max_element(ring_radii.begin(), ring_radii.end());
+          const double largest_ring =
+              *std::max_element(periodic.ring_radii.begin(), periodic.ring_radii.end());
           for (const double depth : depths)
             entries.require(largest_ring < 4 * depth, "Depths", depth,
                             "(largest ring radius/4 = " + shortest(largest_ring / 4) + ", 100] lambda");
@@ -43,8 +43,8 @@ namespace penny
         TimerOutput         timer(log, TimerOutput::never, TimerOutput::wall_times);
         const Table::Format digits{10, true}, error_digits{3, true};
         Table               table({{"D/lambda", Table::Format{4, false}},
-                                   {"cells"},
-                                   {"DoFs"},
+                                   "cells",
+                                   "DoFs",
                                    {"K_I signed FE (Pa m^1/2)", digits},
                                    {"K_I exact (Pa m^1/2)", digits},
                                    {"K_I relative error", error_digits},
@@ -55,13 +55,14 @@ namespace penny
         {
           double cells, dofs, signed_sif, exact_sif, error, cosine_error, uniform_error;
         };
-        const BuecknerTension load{model.wavelength, gap.peak_tension, gap.load_ratio * gap.peak_tension};
+        const BuecknerTension load{periodic.model.wavelength, gap.peak_tension,
+                                   gap.load_ratio * gap.peak_tension};
         const auto solved = spread_over_ranks<Row>(MPI_COMM_WORLD, depths.size(), [&](const unsigned int i) {
-          PeriodicGapModelParameters deeper = model;
-          deeper.gap_half_width             = gap.gap_ratio * model.wavelength;
-          deeper.depth                      = depths[i] * model.wavelength;
+          PeriodicGapModelParameters deeper = periodic.model;
+          deeper.gap_half_width             = gap.gap_ratio * periodic.model.wavelength;
+          deeper.depth                      = depths[i] * periodic.model.wavelength;
           deeper.communicator               = MPI_COMM_SELF;
-          const PeriodicGapMeasurement m    = solve_periodic_gap(deeper, load, ring_radii, timer);
+          const PeriodicGapMeasurement m    = solve_periodic_gap(deeper, load, periodic.ring_radii, timer);
           const double                 K    = m.rings.back().signed_stress_intensity_factor;
           return Row{double(m.n_cells),
                      double(m.n_dofs),
@@ -81,21 +82,18 @@ namespace penny
         log << "Truncation study: K_I of the periodic gap (c/lambda = " << gap.gap_ratio
             << ", p_bar/p* = " << gap.load_ratio
             << ", last ring) against the depth D of the solid, free at z = D\n";
-        table.print(log);
+        publish(table, "depth-study.csv", results, log);
         log << "wall time total (s): " << total_wall_time(timer) << '\n';
-        results.write_csv("depth-study.csv", table);
         return {};
       }
 
-    private:
-      PeriodicGapModelParameters model;
-      std::vector<double>        ring_radii;
-      GapAndLoad                 gap;
-      std::vector<double>        depths;
+      PeriodicGapInput    periodic;
+      GapAndLoad          gap;
+      std::vector<double> depths;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(
       PeriodicGapDepthScene, "periodic-gap-depth",
-      "the periodic-gap K_I against the depth D/lambda of the truncated solid: the truncation study")
+      "the periodic-gap K_I against the depth D/lambda of the truncated solid: the truncation study", "")
 } // namespace penny

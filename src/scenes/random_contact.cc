@@ -18,56 +18,35 @@
 #include <deal.II/base/timer.h>
 
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 namespace penny
 {
   namespace
   {
-    // A number to 3 digits, as text.
-    std::string three_digits(const double value)
+    struct RandomContactScene : Scene
     {
-      std::ostringstream text;
-      text.precision(3);
-      text << value;
-      return text.str();
-    }
-
-    class RandomContactScene : public Scene
-    {
-    public:
       void parameters(Sections &sections) override
       {
-        material_section(sections, material);
-        roughness_section(sections, roughness);
-        random_surfaces_section(sections, surfaces);
+        input.sections(sections);
         sections.subsection("Random contact", [&](Entries &entries) {
-          const double infinity = std::numeric_limits<double>::infinity();
           entries.numbers(
-              "Mean pressures", mean_pressures, {1, 1.5, 2, 2.5, 3}, interval("()", 0, infinity),
-              "p_bar/sqrt(V), V the variance of the full-contact pressure of the sampled lattice; "
-              "solved from the largest down. Units: sqrt(V).");
-          entries.number("Solver tolerance", solver_tolerance, 1e-8, interval("()", 0, infinity),
+              "Mean pressures", mean_pressures, {1, 1.5, 2, 2.5, 3}, above(0),
+              "p_bar/sqrt(V), V the variance of the full-contact pressure of the sampled lattice; solved "
+              "from the largest down. Units: sqrt(V).");
+          entries.number("Solver tolerance", solver_tolerance, 1e-8, above(0),
                          "Residual of the constrained CG, in units of the rms height. Units: none.");
           entries.integer("Maximum iterations", max_iterations, 5000u, 1u, 100000000u,
                           "Of one solve. Units: none.");
         });
       }
 
-      std::vector<std::string> input_files() const override
-      {
-        if (roughness.spectrum == RoughnessParameters::Spectrum::file)
-          return {roughness.spectrum_file};
-        return {};
-      }
-
       // Per realisation: the non-contact share at every load, then the iterations.
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        const double           E_star   = material.plane_strain_modulus();
-        const PowerSpectrum    spectrum = power_spectrum(roughness);
-        const PeriodicGrid     grid     = surface_grid(surfaces, spectrum);
+        const double           E_star   = input.material.plane_strain_modulus();
+        const PowerSpectrum    spectrum = power_spectrum(input.roughness);
+        const PeriodicGrid     grid     = surface_grid(input.surfaces, spectrum);
         const FourierTransform transform(grid);
         const FieldMoments     pressure = lattice_moments(grid, pressure_spectrum(spectrum, E_star)).expected;
         const double           sqrt_V   = std::sqrt(pressure.m0);
@@ -78,9 +57,10 @@ namespace penny
 
         dealii::Timer timer;
         const auto    rows =
-            spread_over_ranks(MPI_COMM_WORLD, surfaces.n_realisations, [&](const unsigned int k) {
+            spread_over_ranks(MPI_COMM_WORLD, input.surfaces.n_realisations, [&](const unsigned int k) {
               const HalfSpaceContact contact(
-                  transform, gaussian_field(transform, spectrum, realisation_seed(surfaces.seed, k)), E_star);
+                  transform, gaussian_field(transform, spectrum, realisation_seed(input.surfaces.seed, k)),
+                  E_star);
               std::vector<double> row(2 * n_loads);
               const auto          steps = load_sweep(contact, loads, {max_iterations, solver_tolerance});
               for (std::size_t l = 0; l < n_loads; ++l)
@@ -108,7 +88,7 @@ namespace penny
             const PressureSummits summits = pressure_summits(continuum, E_star, convention);
             laws.push_back({surface_population(summits, 0, convention), std::sqrt(summits.variance)});
           }
-        Table table({{"p_bar/sqrtV"},
+        Table table({"p_bar/sqrtV",
                      {"A_nc/A_0 BEM", {4, true}},
                      {"std error", {2, true}},
                      {"linear law paper", {4, true}},
@@ -127,45 +107,42 @@ namespace penny
                            std::erfc(mean_pressures[l] / std::sqrt(2.)), area.value / consistent,
                            mean_over(rows, n_loads + l).value});
           }
-        results.write_csv("random-contact.csv", table);
 
         Table summary = Table::summary();
-        summary.add_row({"realisations", surfaces.n_realisations});
+        summary.add_row({"realisations", input.surfaces.n_realisations});
         summary.add_row({"grid", std::to_string(grid.nx) + "^2"});
-        if (roughness.spectrum == RoughnessParameters::Spectrum::file)
-          summary.add_row({"spectrum file", roughness.spectrum_file});
+        if (input.roughness.spectrum == RoughnessParameters::Spectrum::file)
+          summary.add_row({"spectrum file", input.roughness.spectrum_file});
         else
-          summary.add_row({"H, zeta", three_digits(roughness.hurst) + ", " + three_digits(roughness.zeta)});
+          summary.add_row({"H, zeta", Table::label(input.roughness.hurst, 3) + ", " +
+                                          Table::label(input.roughness.zeta, 3)});
         summary.add_row({"MPI ranks", dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)});
         summary.add_row({"wall time (s)", Table::Cell(wall_time, Table::Format{4})});
         summary.add_row({"sqrt(V) sampled lattice (Pa)", sqrt_V});
         summary.add_row(
-            {"sqrt(V) paper/consistent/lattice",
-             three_digits(laws[0].sqrt_V / sqrt_V) + " / " + three_digits(laws[1].sqrt_V / sqrt_V) + " / 1"});
+            {"sqrt(V) paper/consistent/lattice", Table::label(laws[0].sqrt_V / sqrt_V, 3) + " / " +
+                                                     Table::label(laws[1].sqrt_V / sqrt_V, 3) + " / 1"});
         summary.add_row({"prefactor 3 pi R_p eta sqrt(V) paper", laws[0].gaps.prefactor});
         summary.add_row({"prefactor 3 pi R_p eta sqrt(V) consistent", laws[1].gaps.prefactor});
-        results.write_csv("random-contact-summary.csv", summary);
-        log << "Non-contact area of random surfaces by FFT boundary elements, beside the isolated-gap law "
-               "(adhesionless)\n";
-        summary.print(log);
-        table.print(log);
+        publish(summary, "random-contact-summary.csv", results, log,
+                "Non-contact area of random surfaces by FFT boundary elements, beside the isolated-gap law "
+                "(adhesionless)");
+        publish(table, "random-contact.csv", results, log);
         log << "Tables: random-contact.csv, random-contact-summary.csv in " << results.directory().string()
             << "/\n";
         return {};
       }
 
-    private:
-      MaterialParameters      material;
-      RoughnessParameters     roughness;
-      RandomSurfaceParameters surfaces;
-      std::vector<double>     mean_pressures; // p_bar/sqrt(V)
-      double                  solver_tolerance;
-      unsigned int            max_iterations;
+      RandomSurfaceInput  input;
+      std::vector<double> mean_pressures; // p_bar/sqrt(V)
+      double              solver_tolerance;
+      unsigned int        max_iterations;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(
       RandomContactScene, "random-contact",
-      "A_nc/A_0 of sampled random surfaces by FFT boundary elements against p_bar/sqrt(V), beside "
-      "the isolated-gap law in both conventions and Persson's erfc")
+      "A_nc/A_0 of sampled random surfaces by FFT boundary elements against p_bar/sqrt(V), beside the "
+      "isolated-gap law in both conventions and Persson's erfc",
+      "")
 } // namespace penny

@@ -7,7 +7,6 @@
 #include <deal.II/base/mpi.h>
 
 #include <filesystem>
-#include <limits>
 #include <optional>
 #include <set>
 #include <sstream>
@@ -24,10 +23,26 @@ namespace penny
       return types;
     }
 
-    // The subsections of `scene` and the output folder, declared or read.
+    // A scene of `type`, its verdict's measure set.
+    std::unique_ptr<Scene> create(const SceneType &type)
+    {
+      std::unique_ptr<Scene> scene = type.create();
+      scene->measure               = type.measure;
+      return scene;
+    }
+
+    // The subsections of `scene`, its tolerance and the output folder,
+    // declared or read.
     void list_parameters(Sections &sections, Scene &scene, std::string &output_directory)
     {
       scene.parameters(sections);
+      if (!scene.measure.empty())
+        sections.subsection("Verification", [&](Entries &entries) {
+          entries.number(
+              "Tolerance", scene.tolerance, 1e-6, above(0),
+              "The run passes when the " + scene.measure +
+                  " is at most this; otherwise it prints FAIL and exits with status 1. Units: none.");
+        });
       sections.subsection("Output", [&](Entries &entries) {
         entries.text("Directory", output_directory, "output",
                      "Folder for results, replaced whole by each run; created if missing (relative to the "
@@ -50,11 +65,11 @@ namespace penny
     }
   } // namespace
 
-  Verdict verdict(const std::string &what, const double error, const double tolerance)
+  Verdict Scene::verdict(const double error) const
   {
     std::ostringstream message;
     message.precision(2);
-    message << std::scientific << what << ' ' << error << (error <= tolerance ? " <= " : " > ")
+    message << std::scientific << measure << ' ' << error << (error <= tolerance ? " <= " : " > ")
             << "Verification/Tolerance = " << tolerance;
     return {error <= tolerance, message.str()};
   }
@@ -86,7 +101,7 @@ namespace penny
 
   void print_parameters(const SceneType &type, std::ostream &out)
   {
-    const std::unique_ptr<Scene> scene = type.create();
+    const std::unique_ptr<Scene> scene = create(type);
     std::string                  output_directory;
     ParameterHandler             prm;
     declare(prm, type, *scene, output_directory);
@@ -97,13 +112,13 @@ namespace penny
   {
     const ParameterFile file = read_parameter_file(filename);
     const SceneType    &type = find_scene(file.scene.empty() ? default_scene : file.scene);
-    SceneFile           scene{&type, type.create(), "", "", {file.files.begin(), file.files.end()}};
+    SceneFile           scene{&type, create(type), "", "", {file.files.begin(), file.files.end()}};
     ParameterHandler    prm;
     declare(prm, type, *scene.scene, scene.output_directory);
     parse_parameter_file(prm, file, type.name);
     Sections sections(prm, true, std::filesystem::path(filename).parent_path().string());
     list_parameters(sections, *scene.scene, scene.output_directory);
-    for (const std::string &input : scene.scene->input_files())
+    for (const std::string &input : sections.input_files())
       scene.input_files.emplace_back(input);
     std::ostringstream used;
     prm.print_parameters(used, ParameterHandler::PRM);
@@ -152,15 +167,6 @@ namespace penny
       log << ' ' << name;
     log << '\n';
     return verdict;
-  }
-
-  void tolerance_section(Sections &sections, double &tolerance, const std::string &compared)
-  {
-    sections.subsection("Verification", [&](Entries &entries) {
-      entries.number("Tolerance", tolerance, 1e-6, interval("()", 0, std::numeric_limits<double>::infinity()),
-                     "The run passes when " + compared +
-                         " is at most this; otherwise it prints FAIL and exits with status 1. Units: none.");
-    });
   }
 
   void fields_section(Sections &sections, bool &write_fields)

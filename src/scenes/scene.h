@@ -27,10 +27,6 @@ namespace penny
     std::string message;
   };
 
-  // PASS when `error` (what it measures: `what`) is within `tolerance`, the
-  // entry Verification/Tolerance.
-  Verdict verdict(const std::string &what, double error, double tolerance);
-
   class Scene
   {
   public:
@@ -43,15 +39,22 @@ namespace penny
     // Computes, prints to `log` and writes its tables into `results`.
     virtual Verdict run(const ResultFolder &results, std::ostream &log) = 0;
 
-    // Files the run reads besides its parameter files (a mesh, a spectrum):
-    // replacing the output folder must not remove one.
-    virtual std::vector<std::string> input_files() const { return {}; }
+    // What the scene's verdict measures, as its registration names it (empty
+    // for a scene without one), and the largest value that passes: the
+    // entry Verification/Tolerance, which the registry lists for it.
+    std::string measure;
+    double      tolerance = 0;
+
+  protected:
+    // PASS when `error`, the measure, is within the tolerance.
+    Verdict verdict(double error) const;
   };
 
   struct SceneType
   {
     std::string                             name;
     std::string                             description; // one line: what the run computes
+    std::string                             measure;     // what its verdict measures; empty: none
     std::function<std::unique_ptr<Scene>()> create;
   };
 
@@ -91,17 +94,18 @@ namespace penny
   // place and says where they went.
   Verdict run_scene_file(const std::string &filename, std::ostream &log);
 
-  // The subsections many scenes read: Verification/Tolerance, whose
-  // documentation says what the scene compares, and Fields/Write fields.
-  void tolerance_section(Sections &sections, double &tolerance, const std::string &compared);
+  // Fields/Write fields, of the scenes that can write their fields for ParaView.
   void fields_section(Sections &sections, bool &write_fields);
 } // namespace penny
 
-// Registers the Scene subclass `Class` under `name`; used once, at the end of
-// the scene's file.
-#define PENNY_REGISTER_SCENE(Class, name, description)                                                       \
+// Registers the Scene subclass `Class` under `name`, its verdict held to
+// Verification/Tolerance on `measure` (empty: no verdict); used once, at the
+// end of the scene's file.
+#define PENNY_REGISTER_SCENE(Class, name, description, measure)                                              \
   namespace                                                                                                  \
   {                                                                                                          \
-    const bool registered_scene = ::penny::register_scene(                                                   \
-        {name, description, []() -> std::unique_ptr<::penny::Scene> { return std::make_unique<Class>(); }}); \
+    const bool registered_scene =                                                                            \
+        ::penny::register_scene({name, description, measure, []() -> std::unique_ptr<::penny::Scene> {       \
+                                   return std::make_unique<Class>();                                         \
+                                 }});                                                                        \
   }

@@ -5,32 +5,21 @@
 #include "output/table.h"
 #include "scenes/scene.h"
 
-#include <limits>
 #include <sstream>
 
 namespace penny
 {
   namespace
   {
-    // A number as a column name shows it: 0.2.
-    std::string name_of(const double value)
+    struct SinusoidContactScene : Scene
     {
-      std::ostringstream text;
-      text << value;
-      return text.str();
-    }
-
-    class SinusoidContactScene : public Scene
-    {
-    public:
       void parameters(Sections &sections) override
       {
         sections.subsection("Sinusoid", [&](Entries &entries) {
           entries.numbers(
-              "Johnson parameters alpha", alphas, {0, 0.2, 0.4, 0.6},
-              interval("[)", 0, std::numeric_limits<double>::infinity()),
-              "alpha^2 = 2 lambda dgamma/(pi^2 E* h^2) of Johnson's adhesive 1D sinusoid, one curve "
-              "each. Units: none.");
+              "Johnson parameters alpha", alphas, {0, 0.2, 0.4, 0.6}, at_least(0),
+              "alpha^2 = 2 lambda dgamma/(pi^2 E* h^2) of Johnson's adhesive 1D sinusoid, one curve each. "
+              "Units: none.");
           entries.integer("Number of points", n_points, 199u, 2u, 100000u,
                           "Contact semi-widths a/lambda, evenly spaced inside (0, 1/2). Units: none.");
         });
@@ -40,7 +29,7 @@ namespace penny
       {
         std::vector<Table::Column> columns = {{"a/lambda"}};
         for (const double alpha : alphas)
-          columns.push_back({"p/p* alpha=" + name_of(alpha)});
+          columns.push_back({"p/p* alpha=" + Table::label(alpha)});
         Table table(columns);
         for (unsigned int i = 1; i <= n_points; ++i)
           {
@@ -55,7 +44,7 @@ namespace penny
         // The jump into full contact is the curve's maximum inside (0, 1/2), or
         // its end a -> lambda/2 without adhesion; beyond (25/16) (3/5)^(3/4) the
         // curve has none.
-        Table jumps({{"alpha"}, {"jump into full contact at p/p*"}, {"a/lambda"}});
+        Table jumps({"alpha", "jump into full contact at p/p*", "a/lambda"});
         for (const double alpha : alphas)
           if (alpha < periodic_array::largest_alpha_with_extremes())
             {
@@ -70,12 +59,11 @@ namespace penny
         return {};
       }
 
-    private:
       std::vector<double> alphas;
       unsigned int        n_points;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(SinusoidContactScene, "sinusoid-contact",
-                       "Johnson's adhesive 1D sinusoid from its closed form (paper Fig. 1)")
+                       "Johnson's adhesive 1D sinusoid from its closed form (paper Fig. 1)", "")
 } // namespace penny

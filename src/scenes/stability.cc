@@ -98,31 +98,26 @@ namespace penny
       std::string status;    // "pass", "flagged: <reason>" or "FAIL: <reason>"
     };
 
-    class StabilityScene : public Scene
+    struct StabilityScene : Scene
     {
-    public:
       void parameters(Sections &sections) override
       {
-        penny_gap_model_sections(sections, model);
-        face_load_section(sections, load, model.geometry);
-        ring_section(sections, ring_radii, model.geometry);
+        gap.sections(sections, &load);
         sections.subsection("Stability", [&](Entries &entries) {
           entries.number(
               "Target accuracy", target_accuracy, 1e-5, interval("()", 0, 1),
-              "Relative K_I error a case of the stability scene must reach to pass; a case expected "
-              "to miss it is flagged with the reason. Units: none.");
+              "Relative K_I error a case of the stability scene must reach to pass; a case expected to "
+              "miss it is flagged with the reason. Units: none.");
         });
       }
-
-      std::vector<std::string> input_files() const override { return model_input_files(model); }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
         const double target = target_accuracy;
         // Every model on one rank: the cases are spread over the ranks.
-        Setting base{model, load};
+        Setting base{gap.model, load};
         base.model.communicator            = MPI_COMM_SELF;
-        const std::vector<double> &radii   = ring_radii;
+        const std::vector<double> &radii   = gap.ring_radii;
         const auto                 outcome = [](const PennyGapMeasurement &solved, const double error,
                                 const double extra = 0) {
           return Outcome{error, solved.relative_residual, solved.condition_estimate, extra};
@@ -275,19 +270,18 @@ namespace penny
           }
 
         const Table::Format digits{3, true};
-        Table               table({{"case"},
-                                   {"setting"},
+        Table               table({"case",
+                                   "setting",
                                    {"error", digits},
-                                   {"measure"},
+                                   "measure",
                                    {"tolerance", digits},
                                    {"relative residual", digits},
                                    {"condition estimate", digits},
-                                   {"status"}});
+                                   "status"});
         for (const auto &row : rows)
           table.add_row({row.case_name, row.setting, row.error, row.measure, row.tolerance, row.residual,
                          row.condition, row.status});
-        table.print(log);
-        results.write_csv("stability.csv", table);
+        publish(table, "stability.csv", results, log);
 
         const auto failures = std::count_if(rows.begin(), rows.end(), [](const StabilityRow &row) {
           return row.status.rfind("FAIL", 0) == 0;
@@ -297,15 +291,13 @@ namespace penny
         return {false, std::to_string(failures) + " stability case(s) failed; see stability.csv"};
       }
 
-    private:
-      PennyGapModelParameters model;
-      LoadParameters          load;
-      std::vector<double>     ring_radii;
-      double                  target_accuracy;
+      PennyGapInput  gap;
+      LoadParameters load;
+      double         target_accuracy;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(
       StabilityScene, "stability",
-      "stiff and extreme cases around the scene's parameters, each passing or flagged, in one table")
+      "stiff and extreme cases around the scene's parameters, each passing or flagged, in one table", "")
 } // namespace penny

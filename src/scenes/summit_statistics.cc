@@ -22,7 +22,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <sstream>
 
 namespace penny
@@ -35,31 +34,26 @@ namespace penny
       return std::abs(value - expected) / standard_error;
     }
 
-    class SummitStatisticsScene : public Scene
+    struct SummitStatisticsScene : Scene
     {
-    public:
       void parameters(Sections &sections) override
       {
-        material_section(sections, material);
-        roughness_section(sections, roughness);
-        random_surfaces_section(sections, surfaces);
+        input.sections(sections);
         sections.subsection("Summit statistics", [&](Entries &entries) {
-          const double infinity = std::numeric_limits<double>::infinity();
           entries.numbers(
               "Hurst exponents", hurst_exponents, {0.25, 0.5, 0.75}, interval("()", 0, 1),
               "One power law per H and zeta (replacing Roughness/Hurst exponent H). Units: none.");
-          entries.numbers("Magnifications", magnifications, {8, 32}, interval("()", 1, infinity),
+          entries.numbers("Magnifications", magnifications, {8, 32}, above(1),
                           "zeta of each power law (replacing Roughness/Magnification zeta). Units: none.");
           entries.integer("Height bins", n_height_bins, 12u, 1u, 1000u,
                           "Bins of the summit height distribution over [-2, 4] sqrt(V). Units: none.");
           entries.number(
-              "Largest deviation", largest_deviation, 4, interval("()", 0, infinity),
-              "The verdict: the sampled moments, summit density and mean summit curvature lie within "
-              "this many standard errors of their expectation for the sampled lattice. Units: standard "
-              "errors.");
+              "Largest deviation", largest_deviation, 4, above(0),
+              "The verdict: the sampled moments, summit density and mean summit curvature lie within this "
+              "many standard errors of their expectation for the sampled lattice. Units: standard errors.");
         });
         sections.check([&] {
-          if (roughness.spectrum == RoughnessParameters::Spectrum::file)
+          if (input.roughness.spectrum == RoughnessParameters::Spectrum::file)
             throw InputError(
                 "Roughness/Spectrum = file: summit-statistics samples the power laws of its 'Hurst "
                 "exponents' and 'Magnifications'; set Spectrum = power-law");
@@ -70,27 +64,16 @@ namespace penny
       // m0, m2, m4, m22, then the packed summit sample of the pressure field.
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        const double  E_star = material.plane_strain_modulus();
+        const double  E_star = input.material.plane_strain_modulus();
         dealii::Timer timer;
-        Table         summary({{"H"},
-                               {"zeta"},
-                               {"summits"},
-                               {"eta sampled (1/m^2)"},
-                               {"eta std error (1/m^2)"},
-                               {"eta lattice Kac-Rice (1/m^2)"},
-                               {"eta consistent (1/m^2)"},
-                               {"eta paper (1/m^2)"},
-                               {"1/R_p sampled (Pa/m^2)"},
-                               {"1/R_p std error (Pa/m^2)"},
-                               {"1/R_p lattice Kac-Rice (Pa/m^2)"},
-                               {"1/R_p consistent (Pa/m^2)"},
-                               {"1/R_p paper (Pa/m^2)"},
-                               {"V sampled (Pa^2)"},
-                               {"V consistent (Pa^2)"},
-                               {"V paper (Pa^2)"}});
-        Table         screen({{"H"},
-                              {"zeta"},
-                              {"summits"},
+        Table         summary({"H", "zeta", "summits", "eta sampled (1/m^2)", "eta std error (1/m^2)",
+                               "eta lattice Kac-Rice (1/m^2)", "eta consistent (1/m^2)", "eta paper (1/m^2)",
+                               "1/R_p sampled (Pa/m^2)", "1/R_p std error (Pa/m^2)",
+                               "1/R_p lattice Kac-Rice (Pa/m^2)", "1/R_p consistent (Pa/m^2)", "1/R_p paper (Pa/m^2)",
+                               "V sampled (Pa^2)", "V consistent (Pa^2)", "V paper (Pa^2)"});
+        Table         screen({"H",
+                              "zeta",
+                              "summits",
                               {"eta/eta_cons", {4}},
                               {"+-", {1, true}},
                               {"eta_lattice/eta_cons", {4}},
@@ -99,33 +82,20 @@ namespace penny
                               {"+-", {1, true}},
                               {"kappa_lattice/kappa_cons", {4}},
                               {"kappa_paper/kappa_cons", {4}}});
-        Table         moments_table({{"H"},
-                                     {"zeta"},
-                                     {"field"},
-                                     {"moment"},
-                                     {"sampled"},
-                                     {"std error"},
-                                     {"lattice expectation"},
-                                     {"continuum"},
-                                     {"deviation (std errors)"}});
-        Table         heights({{"H"},
-                               {"zeta"},
-                               {"z low/sqrtV"},
-                               {"z high/sqrtV"},
-                               {"summits"},
-                               {"density per height (1/(m^2 Pa))"},
-                               {"density std error (1/(m^2 Pa))"},
-                               {"density Kac-Rice at bin centre (1/(m^2 Pa))"},
-                               {"mean curvature (Pa/m^2)"},
-                               {"mean curvature std error (Pa/m^2)"},
-                               {"mean curvature Kac-Rice at bin centre (Pa/m^2)"}});
-        double        worst = 0;
+        Table  moments_table({"H", "zeta", "field", "moment", "sampled", "std error", "lattice expectation",
+                              "continuum", "deviation (std errors)"});
+        Table  heights({"H", "zeta", "z low/sqrtV", "z high/sqrtV", "summits",
+                        "density per height (1/(m^2 Pa))", "density std error (1/(m^2 Pa))",
+                        "density Kac-Rice at bin centre (1/(m^2 Pa))", "mean curvature (Pa/m^2)",
+                        "mean curvature std error (Pa/m^2)",
+                        "mean curvature Kac-Rice at bin centre (Pa/m^2)"});
+        double worst = 0;
         for (const double hurst : hurst_exponents)
           for (const double zeta : magnifications)
             {
               const PowerSpectrum spectrum =
-                  power_law_spectrum(hurst, roughness.q0, zeta, roughness.amplitude);
-              const PeriodicGrid     grid = surface_grid(surfaces, spectrum);
+                  power_law_spectrum(hurst, input.roughness.q0, zeta, input.roughness.amplitude);
+              const PeriodicGrid     grid = surface_grid(input.surfaces, spectrum);
               const FourierTransform transform(grid);
               const LatticeMoments   height_lattice = lattice_moments(grid, spectrum);
               const LatticeMoments   pressure_lattice =
@@ -134,9 +104,9 @@ namespace penny
               const HeightBins bins{-2 * sqrt_V, 4 * sqrt_V, n_height_bins};
 
               const auto rows =
-                  spread_over_ranks(MPI_COMM_WORLD, surfaces.n_realisations, [&](const unsigned int k) {
+                  spread_over_ranks(MPI_COMM_WORLD, input.surfaces.n_realisations, [&](const unsigned int k) {
                     const GridField h =
-                        gaussian_field(transform, spectrum, realisation_seed(surfaces.seed, k));
+                        gaussian_field(transform, spectrum, realisation_seed(input.surfaces.seed, k));
                     const GridField    p  = full_contact_pressure(transform, h, E_star);
                     const FieldMoments mh = sampled_moments(transform, h), mp = sampled_moments(transform, p);
                     std::vector<double> row = {mh.m0, mh.m2, mh.m4, mp.m0, mp.m2, mp.m4, mp.m22};
@@ -219,13 +189,12 @@ namespace penny
         results.write_csv("sampled-moments.csv", moments_table);
         results.write_csv("summit-heights.csv", heights);
 
-        log << "Summits of the full-contact pressure p_fc over " << surfaces.n_realisations
-            << " realisations on " << surfaces.n_points << "^2 grids (L = " << surfaces.period
+        log << "Summits of the full-contact pressure p_fc over " << input.surfaces.n_realisations
+            << " realisations on " << input.surfaces.n_points << "^2 grids (L = " << input.surfaces.period
             << " lambda0), " << dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD) << " rank(s), "
             << timer.wall_time() << " s wall\n"
             << "eta: summit density, kappa = 1/R_p: mean summit curvature; in units of the consistent "
-               "(Nayak) "
-               "values of the continuum spectrum\n";
+               "(Nayak) values of the continuum spectrum\n";
         screen.print(log);
         log << "Tables: summit-statistics.csv, sampled-moments.csv, summit-heights.csv in "
             << results.directory().string() << "/\n";
@@ -239,19 +208,16 @@ namespace penny
         return {worst <= largest_deviation, message.str()};
       }
 
-    private:
-      MaterialParameters      material;
-      RoughnessParameters     roughness;
-      RandomSurfaceParameters surfaces;
-      std::vector<double>     hurst_exponents, magnifications;
-      unsigned int            n_height_bins;
-      double                  largest_deviation;
+      RandomSurfaceInput  input;
+      std::vector<double> hurst_exponents, magnifications;
+      unsigned int        n_height_bins;
+      double              largest_deviation;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(
       SummitStatisticsScene, "summit-statistics",
-      "summits of the full-contact pressure of sampled Gaussian surfaces over realisations: moments, "
-      "eta, summit heights and mean curvature 1/R_p beside the lattice expectation and both "
-      "conventions")
+      "summits of the full-contact pressure of sampled Gaussian surfaces over realisations: moments, eta, "
+      "summit heights and mean curvature 1/R_p beside the lattice expectation and both conventions",
+      "")
 } // namespace penny

@@ -15,25 +15,23 @@ namespace penny
 {
   namespace
   {
-    class WestergaardCurveScene : public Scene
+    struct WestergaardCurveScene : Scene
     {
-    public:
       void parameters(Sections &sections) override
       {
-        periodic_gap_model_sections(sections, model, ring_radii);
+        periodic.sections(sections);
         sections.subsection("Westergaard curve", [&](Entries &entries) {
           entries.integer(
               "Number of points", n_points, 8u, 1u, 1000u,
               "Mean pressures p_bar/p* = i/(n + 1), i = 1 ... n; each is one FE root search over the "
               "contact half-width. Units: none.");
         });
-        tolerance_section(sections, tolerance, "the largest |p_bar/p* - sin^2(pi a_FE/lambda)|");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        PeriodicGapSearch   search(model, ring_radii.back());
-        const double        lambda = model.wavelength;
+        PeriodicGapSearch   search(periodic);
+        const double        lambda = periodic.model.wavelength;
         const Table::Format all_digits{16, false}, digits{10, true}, error_digits{3, true};
         Table               table({{"p_bar/p*", digits},
                                    {"a/lambda FE", all_digits},
@@ -56,31 +54,26 @@ namespace penny
             worst_contact         = std::max(worst_contact, std::abs(fe_ratio - exact));
             table.add_row({load, fe_ratio, exact, std::abs(fe_ratio - exact), curve, std::abs(curve - load)});
           }
-        results.write_csv("westergaard-curve.csv", table);
-        log << "Adhesionless sinusoid: contact half-width a from FE roots of K_I = 0, beside p_bar/p* = "
-               "sin^2(pi "
-               "a/lambda)\n";
-        table.print(log);
+        publish(table, "westergaard-curve.csv", results, log,
+                "Adhesionless sinusoid: contact half-width a from FE roots of K_I = 0, beside p_bar/p* = "
+                "sin^2(pi a/lambda)");
         Table summary = Table::summary();
         summary.add_row({"largest |a/lambda FE - exact|", Table::Cell(worst_contact, error_digits)});
         summary.add_row(
             {"largest |p_bar/p* - sin^2(pi a_FE/lambda)|", Table::Cell(worst_load, error_digits)});
         search.add_cost(summary);
-        summary.print(log);
-        results.write_csv("westergaard-summary.csv", summary);
-        return verdict("largest error of p_bar/p*", worst_load, tolerance);
+        publish(summary, "westergaard-summary.csv", results, log);
+        return verdict(worst_load);
       }
 
-    private:
-      PeriodicGapModelParameters model;
-      std::vector<double>        ring_radii;
-      unsigned int               n_points;
-      double                     tolerance;
+      PeriodicGapInput periodic;
+      unsigned int     n_points;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(
       WestergaardCurveScene, "westergaard-curve",
-      "the adhesionless sinusoid: contact half-width a from FE roots of K_I = 0 beside p_bar/p* = "
-      "sin^2(pi a/lambda)")
+      "the adhesionless sinusoid: contact half-width a from FE roots of K_I = 0 beside p_bar/p* = sin^2(pi "
+      "a/lambda)",
+      "largest |p_bar/p* - sin^2(pi a_FE/lambda)|")
 } // namespace penny

@@ -12,23 +12,20 @@
 
 #include <cmath>
 #include <iomanip>
-#include <limits>
 #include <sstream>
 
 namespace penny
 {
   namespace
   {
-    class ZeroLoadGapAreaScene : public Scene
+    struct ZeroLoadGapAreaScene : Scene
     {
-    public:
       void parameters(Sections &sections) override
       {
         rough_surface_sections(sections, surface);
         sections.subsection("Zero-load gap area", [&](Entries &entries) {
           entries.number(
-              "Largest p0/sqrt(V)", largest_adhesion_ratio, 5,
-              interval("[)", 0, std::numeric_limits<double>::infinity()),
+              "Largest p0/sqrt(V)", largest_adhesion_ratio, 5, at_least(0),
               "p0/sqrt(V) runs from 0 to this value in Area-load/Number of points steps. Units: none.");
         });
       }
@@ -39,11 +36,8 @@ namespace penny
         const double largest = largest_adhesion_ratio;
         const auto   gaps_of = surface.population(surface.roughness.hurst, surface.roughness.zeta);
         double       worst   = 0;
-        Table        table({{"p0/sqrtV"},
-                            {"A_nc linear closed form"},
-                            {"A_nc linear integral"},
-                            {"A_nc exact g"},
-                            {"A_c Persson-type"}});
+        Table        table({"p0/sqrtV", "A_nc linear closed form", "A_nc linear integral", "A_nc exact g",
+                            "A_c Persson-type"});
         for (unsigned int i = 0; i < range.n_points; ++i)
           {
             const GapPopulation gaps{gaps_of.prefactor, largest * i / (range.n_points - 1)};
@@ -71,12 +65,11 @@ namespace penny
         return {};
       }
 
-    private:
       RoughSurfaceProblem surface;
       double              largest_adhesion_ratio;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(ZeroLoadGapAreaScene, "zero-load-gap-area",
-                       "A_nc/A_0 at zero mean pressure against p0/sqrt(V) (paper Fig. 3)")
+                       "A_nc/A_0 at zero mean pressure against p0/sqrt(V) (paper Fig. 3)", "")
 } // namespace penny

@@ -25,8 +25,8 @@ namespace penny
         return values;
       };
       const double c = fe_stationary_point(values, lo, hi, Extremum::maximum, what,
-                                           "the FE models are too coarse or too shallow (more tip refinement "
-                                           "levels, a deeper solid or a higher degree)");
+                                           "the FE models are too coarse or too shallow (more tip "
+                                           "refinement levels, a deeper solid or a higher degree)");
       return {c, values({c})[0]};
     }
   } // namespace
