@@ -36,6 +36,17 @@ namespace penny
       return documentation + (range.empty() ? "" : " Allowed: " + range + ".");
     }
 
+    // The error for a text that gives no double: a word, or a number no
+    // double holds (a denormal, an overflow), which is outside the range.
+    InputError no_number(const std::string &name, const std::string &text, const std::string &range)
+    {
+      char *end = nullptr;
+      std::strtod(text.c_str(), &end);
+      const bool number = !text.empty() && *end == '\0';
+      return InputError(name + " = " + in_quotes(text) + (number ? " is outside" : " is not a number in") +
+                        " the allowed range " + range);
+    }
+
     std::string joined(const std::vector<std::string> &items, const std::string &separator)
     {
       std::string text;
@@ -90,19 +101,17 @@ namespace penny
   {
     if (!reading_)
       {
-        prm.declare_entry(entry, shortest(default_value), Patterns::Double(),
+        prm.declare_entry(entry, shortest(default_value), Patterns::Anything(),
                           documented(documentation, range.text));
         return;
       }
-    // A value that no double holds (a denormal, an overflow) is outside the range too.
     try
       {
         value = prm.get_double(entry);
       }
     catch (const dealii::ExceptionBase &)
       {
-        throw InputError(name(entry) + " = " + in_quotes(prm.get(entry)) + " is outside the allowed range " +
-                         range.text);
+        throw no_number(name(entry), prm.get(entry), range.text);
       }
     require(range.contains(value), entry, value, range.text);
   }
@@ -113,7 +122,7 @@ namespace penny
     const std::string range = "[" + std::to_string(lo) + ", " + std::to_string(hi) + "]";
     if (!reading_)
       {
-        prm.declare_entry(entry, std::to_string(default_value), Patterns::Integer(),
+        prm.declare_entry(entry, std::to_string(default_value), Patterns::Anything(),
                           documented(documentation, range));
         return;
       }
@@ -123,8 +132,8 @@ namespace penny
       }
     catch (const dealii::ExceptionBase &)
       {
-        throw InputError(name(entry) + " = " + in_quotes(prm.get(entry)) + " is outside the allowed range " +
-                         range);
+        throw InputError(name(entry) + " = " + in_quotes(prm.get(entry)) +
+                         " is not an integer in the allowed range " + range);
       }
     require(value >= lo && value <= hi, entry, value, range);
   }
@@ -138,7 +147,7 @@ namespace penny
         std::vector<std::string> texts;
         for (const double x : defaults)
           texts.push_back(shortest(x));
-        prm.declare_entry(entry, joined(texts, ", "), Patterns::List(Patterns::Double(), 1),
+        prm.declare_entry(entry, joined(texts, ", "), Patterns::Anything(),
                           documented(documentation, "a list of numbers in " + range.text));
         return;
       }
@@ -152,12 +161,26 @@ namespace penny
           }
         catch (const dealii::ExceptionBase &)
           {
-            throw InputError(name(entry) + " = " + in_quotes(item) + " is outside the allowed range " +
-                             range.text);
+            throw no_number(name(entry), item, range.text);
           }
         require(range.contains(x), entry, x, range.text);
         values.push_back(x);
       }
+    if (values.empty())
+      throw no_number(name(entry), prm.get(entry), range.text);
+  }
+
+  void Entries::span(const std::string &quantity, double &smallest, double &largest,
+                     const double default_smallest, const double default_largest, const Range &range,
+                     const std::string &documentation)
+  {
+    // "(Smallest QUANTITY, " and the upper end of the interval: "(Smallest alpha, 0.56]".
+    const std::string upper = range.text.substr(range.text.find(", ") + 2);
+    number("Smallest " + quantity, smallest, default_smallest, range, documentation);
+    number("Largest " + quantity, largest, default_largest,
+           {"(Smallest " + quantity + ", " + upper, [](double) { return true; }}, documentation);
+    require(range.contains(largest) && largest > smallest, "Largest " + quantity, largest,
+            "(Smallest " + quantity + " = " + shortest(smallest) + ", " + upper);
   }
 
   void Entries::flag(const std::string &entry, bool &value, const bool default_value,

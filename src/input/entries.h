@@ -102,6 +102,11 @@ namespace penny
     void file(const std::string &entry, std::string &value, const std::string &default_value,
               const std::string &documentation);
 
+    // 'Smallest QUANTITY' and 'Largest QUANTITY' of a sweep, both in `range`
+    // (an interval) and the largest above the smallest.
+    void span(const std::string &quantity, double &smallest, double &largest, double default_smallest,
+              double default_largest, const Range &range, const std::string &documentation);
+
     // A condition between entries, checked once they are read: throws
     // "Subsection/ENTRY = VALUE is outside the allowed range RANGE" unless `ok`.
     void require(bool ok, const std::string &entry, double value, const std::string &range) const;

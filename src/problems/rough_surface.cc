@@ -80,14 +80,9 @@ namespace penny
           "sections.");
       // Near full contact the gaps are isolated for p_bar of a few sqrt(V);
       // far beyond, the laws underflow to 0 or overflow.
-      entries.number("Smallest mean pressure", area_load.smallest_mean_pressure, 0,
-                     interval("[]", -100, 100, "sqrt(V)"),
-                     "First p_bar/sqrt(V) of the curves (compression positive). Units: sqrt(V).");
-      entries.number("Largest mean pressure", area_load.largest_mean_pressure, 3,
-                     interval("[]", -100, 100, "sqrt(V)"), "Last p_bar/sqrt(V). Units: sqrt(V).");
-      entries.require(area_load.largest_mean_pressure > area_load.smallest_mean_pressure,
-                      "Largest mean pressure", area_load.largest_mean_pressure,
-                      "(Smallest mean pressure, 100] sqrt(V)");
+      entries.span("mean pressure", area_load.smallest_mean_pressure, area_load.largest_mean_pressure, 0, 3,
+                   interval("[]", -100, 100, "sqrt(V)"),
+                   "The range of p_bar/sqrt(V) of the curves (compression positive). Units: sqrt(V).");
       entries.integer(
           "Number of points", area_load.n_points, 61u, 2u, 100000u,
           "Points of every curve, evenly spaced: mean pressures, or p0/sqrt(V) in zero-load-gap-area. "

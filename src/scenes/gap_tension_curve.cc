@@ -21,10 +21,8 @@ namespace penny
       {
         input.sections(sections);
         sections.subsection("Gap-tension curve", [&](Entries &entries) {
-          entries.number("Smallest c_hat", smallest_c_hat, 0.3, above(0), "Smallest c/c_min. Units: none.");
-          entries.number("Largest c_hat", largest_c_hat, 4, above(0), "Largest c/c_min. Units: none.");
-          entries.require(largest_c_hat > smallest_c_hat, "Largest c_hat", largest_c_hat,
-                          "(Smallest c_hat, inf)");
+          entries.span("c_hat", smallest_c_hat, largest_c_hat, 0.3, 4, above(0),
+                       "The range of the curve, c/c_min. Units: none.");
           entries.integer("Number of points", n_points, 24u, 2u, 1000u,
                           "Points, evenly spaced in c_hat. Units: none.");
         });

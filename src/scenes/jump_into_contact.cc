@@ -28,12 +28,9 @@ namespace penny
       {
         periodic.sections(sections);
         sections.subsection("Jump into contact", [&](Entries &entries) {
-          entries.number("Smallest alpha", smallest_alpha, 1e-4, interval("[)", 1e-8, 0.56), "Units: none.");
           // Above 0.56 the maximum leaves the search interval.
-          entries.number("Largest alpha", largest_alpha, 0.5,
-                         {"(Smallest alpha, 0.56]", [](double) { return true; }}, "Units: none.");
-          entries.require(largest_alpha > smallest_alpha && largest_alpha <= 0.56, "Largest alpha",
-                          largest_alpha, "(Smallest alpha = " + shortest(smallest_alpha) + ", 0.56]");
+          entries.span("alpha", smallest_alpha, largest_alpha, 1e-4, 0.5, interval("[]", 1e-8, 0.56),
+                       "The range of alpha = K_Ic/(p* sqrt(lambda)). Units: none.");
           entries.integer(
               "Number of alphas", n_alphas, 9u, 1u, 1000u,
               "alphas evenly spaced in log(alpha) from the smallest to the largest; each is one FE "
