@@ -21,9 +21,12 @@ namespace penny
       int  precision  = 6;
       bool scientific = false;
     };
+    // The house formats: every digit of a double, ten significant ones, and
+    // three for an error.
+    static constexpr Format all_digits{16, false}, digits{10, true}, error_digits{3, true};
 
     // A column named by its text alone takes the default format:
-    // Table({"H", "zeta", {"error", Format{3, true}}}).
+    // Table({"H", "zeta", {"error", error_digits}}).
     struct Column
     {
       Column(const char *name) : name(name) {}

@@ -289,15 +289,14 @@ namespace penny
   double report_rings(const std::vector<RingResult> &rings, const double exact, const std::string &ring_unit,
                       const Table &summary, const ResultFolder &results, std::ostream &log)
   {
-    const Table::Format digits{10, true}, error_digits{3, true};
-    Table               table({{"ring (" + ring_unit + ")", digits},
-                               {"J (J/m^2)", digits},
-                               {"|K_I| FE (Pa m^1/2)", digits},
-                               {"K_I signed FE (Pa m^1/2)", digits},
-                               {"K_I exact (Pa m^1/2)", digits},
-                               {"|K_I| relative error", error_digits},
-                               {"signed K_I relative error", error_digits}});
-    double              worst = 0;
+    Table  table({{"ring (" + ring_unit + ")", Table::digits},
+                  {"J (J/m^2)", Table::digits},
+                  {"|K_I| FE (Pa m^1/2)", Table::digits},
+                  {"K_I signed FE (Pa m^1/2)", Table::digits},
+                  {"K_I exact (Pa m^1/2)", Table::digits},
+                  {"|K_I| relative error", Table::error_digits},
+                  {"signed K_I relative error", Table::error_digits}});
+    double worst = 0;
     for (const auto &ring : rings)
       {
         const double modulus_error = relative_error(ring.stress_intensity_factor, std::abs(exact));

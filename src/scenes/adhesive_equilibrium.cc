@@ -45,16 +45,15 @@ namespace penny
         const auto            c_t = fe_stable_gap_radius(search.gaps, P, R_p, K_Ic, minimum, MPI_COMM_WORLD);
         const auto            exact = closed_form::stable_gap_radius(P, R_p, K_Ic);
 
-        const Table::Format all_digits{16, false};
-        Table               summary = Table::summary();
-        summary.add_row({"peak tension P (Pa)", Table::Cell(P, all_digits)});
-        summary.add_row({"p0 FE (Pa)", Table::Cell(minimum.tension, all_digits)});
+        Table summary = Table::summary();
+        summary.add_row({"peak tension P (Pa)", Table::Cell(P, Table::all_digits)});
+        summary.add_row({"p0 FE (Pa)", Table::Cell(minimum.tension, Table::all_digits)});
         if (c_t)
           {
-            summary.add_row({"gap radius c_t FE (m)", Table::Cell(*c_t, all_digits)});
-            summary.add_row({"c_t closed form (m)", Table::Cell(*exact, all_digits)});
+            summary.add_row({"gap radius c_t FE (m)", Table::Cell(*c_t, Table::all_digits)});
+            summary.add_row({"c_t closed form (m)", Table::Cell(*exact, Table::all_digits)});
             summary.add_row(
-                {"relative error", Table::Cell(relative_error(*c_t, *exact), Table::Format{3, true})});
+                {"relative error", Table::Cell(relative_error(*c_t, *exact), Table::error_digits)});
           }
         else
           summary.add_row({"gap", "closed: P < p0, no gap survives (full contact)"});

@@ -26,18 +26,18 @@ namespace penny
         const double          psi     = minimum.tension / adhesion_tension(R_p, K_Ic);
         const double          c_hat   = minimum.gap_radius / adhesion_length(R_p, K_Ic);
 
-        const Table::Format all_digits{16, false}, error_digits{3, true};
-        Table               summary = Table::summary();
-        summary.add_row({"p0 FE (Pa)", Table::Cell(minimum.tension, all_digits)});
-        summary.add_row({"c_min FE (m)", Table::Cell(minimum.gap_radius, all_digits)});
-        summary.add_row({"psi FE", Table::Cell(psi, all_digits)});
-        summary.add_row({"psi exact", Table::Cell(closed_form::psi, all_digits)});
-        summary.add_row({"c_min/(R_p K_Ic)^(2/5) FE", Table::Cell(c_hat, all_digits)});
-        summary.add_row({"c_min/(R_p K_Ic)^(2/5) exact", Table::Cell(closed_form::c_min_factor, all_digits)});
+        Table summary = Table::summary();
+        summary.add_row({"p0 FE (Pa)", Table::Cell(minimum.tension, Table::all_digits)});
+        summary.add_row({"c_min FE (m)", Table::Cell(minimum.gap_radius, Table::all_digits)});
+        summary.add_row({"psi FE", Table::Cell(psi, Table::all_digits)});
+        summary.add_row({"psi exact", Table::Cell(closed_form::psi, Table::all_digits)});
+        summary.add_row({"c_min/(R_p K_Ic)^(2/5) FE", Table::Cell(c_hat, Table::all_digits)});
         summary.add_row(
-            {"psi relative error", Table::Cell(relative_error(psi, closed_form::psi), error_digits)});
+            {"c_min/(R_p K_Ic)^(2/5) exact", Table::Cell(closed_form::c_min_factor, Table::all_digits)});
+        summary.add_row(
+            {"psi relative error", Table::Cell(relative_error(psi, closed_form::psi), Table::error_digits)});
         summary.add_row({"c_min relative error",
-                         Table::Cell(relative_error(c_hat, closed_form::c_min_factor), error_digits)});
+                         Table::Cell(relative_error(c_hat, closed_form::c_min_factor), Table::error_digits)});
         search.add_cost(summary);
         publish(summary, "adhesive-minimum.csv", results, log,
                 "Adhesive minimum: min over c of P(c) = [K_Ic + K_2(c)/(2 R_p)] / K_1(c), FE");

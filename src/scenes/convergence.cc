@@ -158,7 +158,7 @@ namespace penny
                 {"cycle"}, {setting_name(sequence.strategy), digits}, {"cells"}, {"DoFs"}};
         for (const double rho : radii)
           columns.push_back({"K_I ring " + Utilities::to_string(rho) + " (Pa m^1/2)", digits});
-        columns.push_back({"relative error", Table::Format{3, true}});
+        columns.push_back({"relative error", Table::error_digits});
         columns.push_back({"rate", Table::Format{3, false}});
         for (const auto &phase : phases)
           columns.push_back({phase + " (s)", Table::Format{3, false}});

@@ -20,24 +20,22 @@ namespace penny
   {
     using namespace dealii;
 
-    const Table::Format digits{10, true}, error_digits{3, true};
-
     Table front_table(const EllipticalGap &gap, const EllipticalGapMeasurement &solved)
     {
       std::vector<Table::Column> columns = {{"phi (rad)", Table::Format{6, false}},
                                             {"x (m)", Table::Format{6, false}},
                                             {"y (m)", Table::Format{6, false}},
-                                            {"K_I exact (Pa m^1/2)", digits}};
+                                            {"K_I exact (Pa m^1/2)", Table::digits}};
       if (!solved.axisymmetric_sifs.empty())
         {
-          columns.push_back({"K_I axisymmetric FE (Pa m^1/2)", digits});
-          columns.push_back({"relative difference 3D - axisymmetric, last ring", error_digits});
+          columns.push_back({"K_I axisymmetric FE (Pa m^1/2)", Table::digits});
+          columns.push_back({"relative difference 3D - axisymmetric, last ring", Table::error_digits});
         }
       for (const double rho : solved.ring_radii)
         {
           const std::string ring = ring_name(rho);
-          columns.push_back({"K_I signed FE " + ring + " (Pa m^1/2)", digits});
-          columns.push_back({"relative error " + ring, error_digits});
+          columns.push_back({"K_I signed FE " + ring + " (Pa m^1/2)", Table::digits});
+          columns.push_back({"relative error " + ring, Table::error_digits});
         }
       Table        table(columns);
       const double a = gap.semi_axis_a, b = gap.aspect_ratio * a;
@@ -75,20 +73,20 @@ namespace penny
       summary.add_row({"MPI ranks", Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)});
       summary.add_row({"solver", solved.solver});
       summary.add_row({"CG iterations", solved.iterations});
-      row("relative residual", solved.relative_residual, digits);
+      row("relative residual", solved.relative_residual, Table::digits);
       for (unsigned int r = 0; r < solved.ring_radii.size(); ++r)
         {
           double worst = 0;
           for (unsigned int i = 0; i < solved.angles.size(); ++i)
             worst = std::max(worst, relative_error(solved.signed_sifs[r][i], solved.exact_sifs[i]));
-          row("largest K_I relative error, " + ring_name(solved.ring_radii[r]), worst, error_digits);
+          row("largest K_I relative error, " + ring_name(solved.ring_radii[r]), worst, Table::error_digits);
         }
-      row("w(0) FE (m)", solved.opening_at_centre, digits);
-      row("w(0) exact (m)", solved.exact_opening_at_centre, digits);
+      row("w(0) FE (m)", solved.opening_at_centre, Table::digits);
+      row("w(0) exact (m)", solved.exact_opening_at_centre, Table::digits);
       row("w(0) relative error", relative_error(solved.opening_at_centre, solved.exact_opening_at_centre),
-          error_digits);
+          Table::error_digits);
       row("gap volume relative error", relative_error(solved.gap_volume, solved.exact_gap_volume),
-          error_digits);
+          Table::error_digits);
       row("peak memory, all ranks (MB)", solved.peak_memory, Table::Format{5, false});
       add_phase_times(summary, timer);
       return summary;

@@ -246,7 +246,7 @@ namespace penny
         summary.add_row({"3D models solved (3 loads each)", solved.fe_models});
         summary.add_row({"MPI ranks", Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)});
         summary.add_row({"largest relative error of b/a, the area ratio and psi",
-                         Table::Cell(solved.largest_error, Table::Format{3, true})});
+                         Table::Cell(solved.largest_error, Table::error_digits)});
         add_phase_times(summary, timer);
 
         publish(

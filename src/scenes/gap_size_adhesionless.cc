@@ -25,13 +25,12 @@ namespace penny
         const double   a = load.tension_radius;
         const double   c = fe_adhesionless_gap_radius(search.gaps, load.peak_tension, a, MPI_COMM_WORLD);
 
-        const Table::Format all_digits{16, false}, error_digits{3, true};
-        const double        error   = relative_error(c / a, closed_form::adhesionless_c_over_a);
-        Table               summary = Table::summary();
-        summary.add_row({"c/a FE", Table::Cell(c / a, all_digits)});
+        const double error   = relative_error(c / a, closed_form::adhesionless_c_over_a);
+        Table        summary = Table::summary();
+        summary.add_row({"c/a FE", Table::Cell(c / a, Table::all_digits)});
         summary.add_row(
-            {"c/a exact, sqrt(3/2)", Table::Cell(closed_form::adhesionless_c_over_a, all_digits)});
-        summary.add_row({"relative error", Table::Cell(error, error_digits)});
+            {"c/a exact, sqrt(3/2)", Table::Cell(closed_form::adhesionless_c_over_a, Table::all_digits)});
+        summary.add_row({"relative error", Table::Cell(error, Table::error_digits)});
         search.add_cost(summary);
         publish(summary, "gap-size.csv", results, log,
                 "Adhesionless gap size: FE K_I(c) = 0 for the parabola P (1 - r^2/a^2)");

@@ -62,7 +62,7 @@ namespace penny
           }
         publish(table, "gap-tension-curve.csv", results, log);
         Table summary = Table::summary();
-        summary.add_row({"largest relative error", Table::Cell(worst, Table::Format{3, true})});
+        summary.add_row({"largest relative error", Table::Cell(worst, Table::error_digits)});
         search.add_cost(summary);
         summary.print(log);
         return verdict(worst);

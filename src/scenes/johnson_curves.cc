@@ -18,7 +18,6 @@ namespace penny
 {
   namespace
   {
-    const Table::Format all_digits{16, false}, error_digits{3, true};
 
     struct JohnsonCurvesScene : Scene
     {
@@ -42,9 +41,9 @@ namespace penny
         const double                                       lambda = periodic.model.wavelength;
         Table                                              points({{"alpha", Table::Format{4, false}},
                                                                    {"a/lambda", Table::Format{6, false}},
-                                                                   {"p_bar/p* FE", all_digits},
-                                                                   {"p_bar/p* Johnson", all_digits},
-                                                                   {"absolute error", error_digits}});
+                                                                   {"p_bar/p* FE", Table::all_digits},
+                                                                   {"p_bar/p* Johnson", Table::all_digits},
+                                                                   {"absolute error", Table::error_digits}});
         std::vector<double>                                worst(alphas.size(), 0.);
         std::vector<std::vector<std::vector<Table::Cell>>> rows(alphas.size());
         const auto          ratio_at = [&](const unsigned int i) { return 0.5 * (i + 1) / (n_points + 1); };
@@ -99,7 +98,7 @@ namespace penny
         Table summary = Table::summary();
         for (unsigned int k = 0; k < alphas.size(); ++k)
           summary.add_row({"largest |p_bar/p* FE - Johnson|, alpha = " + Table::label(alphas[k]),
-                           Table::Cell(worst[k], error_digits)});
+                           Table::Cell(worst[k], Table::error_digits)});
         search.add_cost(summary);
         summary.print(log);
         publish(extremes, "johnson-extremes.csv", results, log,

@@ -20,7 +20,6 @@ namespace penny
 {
   namespace
   {
-    const Table::Format all_digits{16, false}, digits{10, true}, error_digits{3, true};
 
     struct JumpIntoContactScene : Scene
     {
@@ -48,17 +47,17 @@ namespace penny
         const FeLoadExtremum at_critical = fe_jump_into_contact(search.gaps, critical.alpha, MPI_COMM_WORLD);
 
         Table summary = Table::summary();
-        summary.add_row({"critical alpha FE", Table::Cell(critical.alpha, all_digits)});
+        summary.add_row({"critical alpha FE", Table::Cell(critical.alpha, Table::all_digits)});
+        summary.add_row({"critical alpha exact, 3^(3/4)/4",
+                         Table::Cell(periodic_array::critical_alpha, Table::all_digits)});
         summary.add_row(
-            {"critical alpha exact, 3^(3/4)/4", Table::Cell(periodic_array::critical_alpha, all_digits)});
+            {"relative error", Table::Cell(relative_error(critical.alpha, periodic_array::critical_alpha),
+                                           Table::error_digits)});
+        summary.add_row({"a/lambda at alpha_c FE", Table::Cell(contact, Table::all_digits)});
+        summary.add_row({"a/lambda at alpha_c exact",
+                         Table::Cell(periodic_array::critical_contact_ratio, Table::all_digits)});
         summary.add_row(
-            {"relative error",
-             Table::Cell(relative_error(critical.alpha, periodic_array::critical_alpha), error_digits)});
-        summary.add_row({"a/lambda at alpha_c FE", Table::Cell(contact, all_digits)});
-        summary.add_row(
-            {"a/lambda at alpha_c exact", Table::Cell(periodic_array::critical_contact_ratio, all_digits)});
-        summary.add_row(
-            {"max p_bar/p* FE at the FE alpha_c", Table::Cell(at_critical.load_ratio, error_digits)});
+            {"max p_bar/p* FE at the FE alpha_c", Table::Cell(at_critical.load_ratio, Table::error_digits)});
         summary.add_row({"FE solves", dealii::Utilities::MPI::sum(search.gaps.n_solves(), MPI_COMM_WORLD)});
         publish(summary, "critical-alpha.csv", results, log,
                 "Critical alpha: the FE maximum over c of K_cosine(c)/sqrt(lambda), where the jump into "
@@ -67,10 +66,10 @@ namespace penny
         Table      table({{"alpha", Table::Format{4, true}},
                           {"a/lambda FE", Table::Format{8, false}},
                           {"a/lambda Johnson", Table::Format{8, false}},
-                          {"1 - p_bar_max/p* FE", digits},
-                          {"1 - p_bar_max/p* Johnson", digits},
-                          {"absolute error", error_digits},
-                          {"5 (alpha/4)^(4/5)", digits},
+                          {"1 - p_bar_max/p* FE", Table::digits},
+                          {"1 - p_bar_max/p* Johnson", Table::digits},
+                          {"absolute error", Table::error_digits},
+                          {"5 (alpha/4)^(4/5)", Table::digits},
                           {"Johnson/small-alpha law", Table::Format{6, false}}});
         double     worst = 0;
         const auto maximum =
@@ -92,7 +91,7 @@ namespace penny
                 "\nJump into full contact: 1 - p_bar_max/p* from the FE maximum over c of p_bar/p* at K_I = "
                 "K_Ic, beside the maximum of Johnson's curve and the small-alpha law");
         Table cost = Table::summary();
-        cost.add_row({"largest |p_bar_max/p* FE - Johnson|", Table::Cell(worst, error_digits)});
+        cost.add_row({"largest |p_bar_max/p* FE - Johnson|", Table::Cell(worst, Table::error_digits)});
         search.add_cost(cost);
         cost.print(log);
         return verdict(std::max(relative_error(critical.alpha, periodic_array::critical_alpha), worst));

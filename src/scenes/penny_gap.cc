@@ -57,9 +57,9 @@ namespace penny
       table.add_row({"degree", degree});
       table.add_row({"MPI ranks", dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)});
       table.add_row({"solver", results.solver});
-      table.add_row({"relative residual", Table::Cell(results.relative_residual, Table::Format{10, true})});
+      table.add_row({"relative residual", Table::Cell(results.relative_residual, Table::digits)});
       const auto row = [&](const std::string &name, const double value) {
-        table.add_row({name, Table::Cell(value, Table::Format{10, true})});
+        table.add_row({name, Table::Cell(value, Table::digits)});
       };
       const auto estimate = [&](const std::string &name, const ClosedForm &closed_form) {
         table.add_row({name + " exact: quadrature error estimate (relative)",

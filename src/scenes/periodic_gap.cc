@@ -20,8 +20,6 @@ namespace penny
   {
     using dealii::TimerOutput;
 
-    const Table::Format all_digits{16, false}, digits{10, true}, error_digits{3, true};
-
     struct PeriodicGapScene : Scene
     {
       void parameters(Sections &sections) override
@@ -52,24 +50,24 @@ namespace penny
         const auto row     = [&](const std::string &name, const double value, const Table::Format format) {
           summary.add_row({name, Table::Cell(value, format)});
         };
-        row("c/lambda", gap.gap_ratio, all_digits);
-        row("contact half-width a/lambda", 0.5 - gap.gap_ratio, all_digits);
-        row("p_bar/p*", gap.load_ratio, all_digits);
-        row("depth D/lambda", periodic.model.depth / periodic.model.wavelength, all_digits);
+        row("c/lambda", gap.gap_ratio, Table::all_digits);
+        row("contact half-width a/lambda", 0.5 - gap.gap_ratio, Table::all_digits);
+        row("p_bar/p*", gap.load_ratio, Table::all_digits);
+        row("depth D/lambda", periodic.model.depth / periodic.model.wavelength, Table::all_digits);
         summary.add_row({"cells", results.n_cells});
         summary.add_row({"DoFs", results.n_dofs});
         summary.add_row({"degree", periodic.model.degree});
         summary.add_row({"MPI ranks", dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)});
         summary.add_row({"solver", results.solver});
-        row("relative residual", results.relative_residual, digits);
-        row("K_I of cos(2 pi x/lambda) Pa FE (Pa m^1/2)", results.cosine_sif, digits);
-        row("K_I of cos(2 pi x/lambda) Pa exact (Pa m^1/2)", results.exact_cosine_sif, digits);
+        row("relative residual", results.relative_residual, Table::digits);
+        row("K_I of cos(2 pi x/lambda) Pa FE (Pa m^1/2)", results.cosine_sif, Table::digits);
+        row("K_I of cos(2 pi x/lambda) Pa exact (Pa m^1/2)", results.exact_cosine_sif, Table::digits);
         row("K_I of cos(2 pi x/lambda) Pa relative error",
-            relative_error(results.cosine_sif, results.exact_cosine_sif), error_digits);
-        row("K_I of 1 Pa uniform FE (Pa m^1/2)", results.uniform_sif, digits);
-        row("K_I of 1 Pa uniform, Koiter (Pa m^1/2)", results.exact_uniform_sif, digits);
+            relative_error(results.cosine_sif, results.exact_cosine_sif), Table::error_digits);
+        row("K_I of 1 Pa uniform FE (Pa m^1/2)", results.uniform_sif, Table::digits);
+        row("K_I of 1 Pa uniform, Koiter (Pa m^1/2)", results.exact_uniform_sif, Table::digits);
         row("K_I of 1 Pa uniform relative error",
-            relative_error(results.uniform_sif, results.exact_uniform_sif), error_digits);
+            relative_error(results.uniform_sif, results.exact_uniform_sif), Table::error_digits);
         add_phase_times(summary, timer);
         return summary;
       }

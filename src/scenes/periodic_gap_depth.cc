@@ -40,16 +40,15 @@ namespace penny
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        TimerOutput         timer(log, TimerOutput::never, TimerOutput::wall_times);
-        const Table::Format digits{10, true}, error_digits{3, true};
-        Table               table({{"D/lambda", Table::Format{4, false}},
-                                   "cells",
-                                   "DoFs",
-                                   {"K_I signed FE (Pa m^1/2)", digits},
-                                   {"K_I exact (Pa m^1/2)", digits},
-                                   {"K_I relative error", error_digits},
-                                   {"K_cosine relative error", error_digits},
-                                   {"K_uniform relative error", error_digits}});
+        TimerOutput timer(log, TimerOutput::never, TimerOutput::wall_times);
+        Table       table({{"D/lambda", Table::Format{4, false}},
+                           "cells",
+                           "DoFs",
+                           {"K_I signed FE (Pa m^1/2)", Table::digits},
+                           {"K_I exact (Pa m^1/2)", Table::digits},
+                           {"K_I relative error", Table::error_digits},
+                           {"K_cosine relative error", Table::error_digits},
+                           {"K_uniform relative error", Table::error_digits}});
         // Each depth a model on one rank, the depths spread over the ranks.
         struct Row
         {

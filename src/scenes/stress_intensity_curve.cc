@@ -39,12 +39,11 @@ namespace penny
                           (n_points == 1 ? smallest : smallest + (largest - smallest) * i / (n_points - 1)));
         const auto sifs = search.gaps.unit_load_sifs(radii, MPI_COMM_WORLD);
 
-        const Table::Format digits{12, true}, error_digits{3, true};
-        Table               curve({{"c/a", Table::Format{6, false}},
-                                   {"K_I FE (Pa m^1/2)", digits},
-                                   {"K_I closed form (Pa m^1/2)", digits},
-                                   {"error/(2 P sqrt(c/pi))", error_digits}});
-        double              worst = 0;
+        Table  curve({{"c/a", Table::Format{6, false}},
+                      {"K_I FE (Pa m^1/2)", Table::digits},
+                      {"K_I closed form (Pa m^1/2)", Table::digits},
+                      {"error/(2 P sqrt(c/pi))", Table::error_digits}});
+        double worst = 0;
         for (unsigned int i = 0; i < radii.size(); ++i)
           {
             const double c  = radii[i];
@@ -60,7 +59,7 @@ namespace penny
         publish(curve, "stress-intensity-curve.csv", results, log,
                 "K_I of the parabola P (1 - r^2/a^2) against c/a (zero at sqrt(3/2) = 1.2247)");
         Table summary = Table::summary();
-        summary.add_row({"largest error/(2 P sqrt(c/pi))", Table::Cell(worst, error_digits)});
+        summary.add_row({"largest error/(2 P sqrt(c/pi))", Table::Cell(worst, Table::error_digits)});
         search.add_cost(summary);
         publish(summary, "summary.csv", results, log);
         return verdict(worst);

@@ -30,17 +30,16 @@ namespace penny
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        PeriodicGapSearch   search(periodic);
-        const double        lambda = periodic.model.wavelength;
-        const Table::Format all_digits{16, false}, digits{10, true}, error_digits{3, true};
-        Table               table({{"p_bar/p*", digits},
-                                   {"a/lambda FE", all_digits},
-                                   {"a/lambda exact", all_digits},
-                                   {"a/lambda error", error_digits},
-                                   {"sin^2(pi a_FE/lambda)", all_digits},
-                                   {"p_bar/p* error", error_digits}});
-        double              worst_load = 0, worst_contact = 0;
-        const auto          load_at = [&](const unsigned int i) { return (i + 1.) / (n_points + 1); };
+        PeriodicGapSearch search(periodic);
+        const double      lambda = periodic.model.wavelength;
+        Table             table({{"p_bar/p*", Table::digits},
+                                 {"a/lambda FE", Table::all_digits},
+                                 {"a/lambda exact", Table::all_digits},
+                                 {"a/lambda error", Table::error_digits},
+                                 {"sin^2(pi a_FE/lambda)", Table::all_digits},
+                                 {"p_bar/p* error", Table::error_digits}});
+        double            worst_load = 0, worst_contact = 0;
+        const auto        load_at = [&](const unsigned int i) { return (i + 1.) / (n_points + 1); };
         const auto contact = spread_over_ranks<double>(MPI_COMM_WORLD, n_points, [&](const unsigned int i) {
           return fe_westergaard_contact_half_width(search.gaps, load_at(i), MPI_COMM_SELF);
         });
@@ -58,9 +57,9 @@ namespace penny
                 "Adhesionless sinusoid: contact half-width a from FE roots of K_I = 0, beside p_bar/p* = "
                 "sin^2(pi a/lambda)");
         Table summary = Table::summary();
-        summary.add_row({"largest |a/lambda FE - exact|", Table::Cell(worst_contact, error_digits)});
+        summary.add_row({"largest |a/lambda FE - exact|", Table::Cell(worst_contact, Table::error_digits)});
         summary.add_row(
-            {"largest |p_bar/p* - sin^2(pi a_FE/lambda)|", Table::Cell(worst_load, error_digits)});
+            {"largest |p_bar/p* - sin^2(pi a_FE/lambda)|", Table::Cell(worst_load, Table::error_digits)});
         search.add_cost(summary);
         publish(summary, "westergaard-summary.csv", results, log);
         return verdict(worst_load);
