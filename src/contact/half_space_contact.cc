@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -18,45 +19,110 @@ namespace penny
       return std::accumulate(field.begin(), field.end(), 0.) / field.size();
     }
 
-    // Clip at zero and scale to the mean pressure.
-    void make_admissible(GridField &pressure, const double mean_pressure)
+    std::string formatted(const char *format, const double a, const double b = 0, const double c = 0)
     {
-      for (double &p : pressure)
-        p = std::max(p, 0.);
-      const double current = mean(pressure);
-      if (!(current > 0))
-        throw std::invalid_argument("contact solver: the initial pressure is nowhere positive");
-      for (double &p : pressure)
-        p *= mean_pressure / current;
+      char text[240];
+      std::snprintf(text, sizeof text, format, a, b, c);
+      return text;
     }
 
-    // Shift f by minus its mean over the contact points (p > 0).
-    void centre_on_contact(const GridField &pressure, GridField &f)
+    // The largest grid spacing along a direction that has more than one point
+    // (an nx x 1 grid is a plane-strain problem: its y spacing means nothing).
+    double grid_spacing(const PeriodicGrid &grid)
     {
-      double      sum   = 0;
-      std::size_t count = 0;
-      for (std::size_t i = 0; i < f.size(); ++i)
-        if (pressure[i] > 0)
-          {
-            sum += f[i];
-            ++count;
-          }
-      const double shift = sum / count;
-      for (double &value : f)
-        value -= shift;
+      double spacing = 0;
+      if (grid.nx > 1)
+        spacing = grid.lx / grid.nx;
+      if (grid.ny > 1)
+        spacing = std::max(spacing, grid.ly / grid.ny);
+      return spacing;
+    }
+
+    // The first minimum of the energy along g + alpha d (alpha > 0): its
+    // elastic part is alpha r.d + alpha^2 d.Kd/2 (before clipping at the wall),
+    // its interaction part sums over the moving points, each clipped there:
+    //   E'(alpha) = r.d + alpha d.Kd + sum_i [phi'(max(g_i + alpha d_i, 0)) - phi'(g_i)] d_i
+    // (phi' counted 0 at a clipped point). Without adhesion alpha = -r.d/d.Kd;
+    // with it the minimum is bracketed by doubling and found by safeguarded
+    // Newton. No bracket within 2^60 times the elastic step: nothing holds
+    // the surfaces together along d.
+    double step_length(const Adhesion &adhesion, const double slope_along, const double curvature,
+                       const GridField &gap, const GridField &direction, const GridField &slope)
+    {
+      if (!adhesion.active())
+        {
+          if (!(curvature > 0))
+            throw std::runtime_error("contact solver: breakdown (no elastic stiffness along the search direction)");
+          return -slope_along / curvature;
+        }
+      const double reach      = adhesion.reach();
+      const auto   derivative = [&](const double alpha, double &second) {
+        double first = slope_along + alpha * curvature;
+        second       = curvature;
+        for (std::size_t i = 0; i < gap.size(); ++i)
+          if (direction[i] != 0)
+            {
+              const double g = gap[i] + alpha * direction[i];
+              if (gap[i] >= reach && g >= reach)
+                continue;
+              const double s = g > 0 ? adhesion.slope(g) : 0;
+              first += (s - slope[i]) * direction[i];
+              second -= s / adhesion.range * direction[i] * direction[i];
+            }
+        return first;
+      };
+      double alpha = curvature > 0 ? -slope_along / curvature : adhesion.range, low = 0,
+             high  = std::numeric_limits<double>::infinity();
+      for (unsigned int k = 0; k < 200; ++k)
+        {
+          double       second;
+          const double first = derivative(alpha, second);
+          if (std::abs(first) <= 1e-12 * std::abs(slope_along))
+            return alpha;
+          (first < 0 ? low : high) = alpha;
+          if (std::isinf(high))
+            {
+              if (alpha > std::ldexp(curvature > 0 ? -slope_along / curvature : adhesion.range, 60))
+                throw std::runtime_error("contact solver: the surfaces separate (no equilibrium in contact at this "
+                                         "mean pressure: beyond the pull-off load)");
+              alpha = second > 0 && alpha - first / second > alpha ? alpha - first / second : 2 * alpha;
+              continue;
+            }
+          const double newton = second > 0 ? alpha - first / second : low;
+          alpha               = newton > low && newton < high ? newton : (low + high) / 2;
+          if (high - low <= 1e-14 * high)
+            return alpha;
+        }
+      return alpha;
     }
   } // namespace
 
-  HalfSpaceContact::HalfSpaceContact(const FourierTransform &transform, GridField heights,
-                                     const double E_star)
-      : transform(transform), heights_(std::move(heights)), E_star(E_star)
+  HalfSpaceContact::HalfSpaceContact(const FourierTransform &transform, GridField heights, const double E_star,
+                                     const Adhesion &adhesion)
+      : transform_(transform), heights_(std::move(heights)), E_star(E_star), adhesion_(adhesion)
   {
     if (heights_.size() != transform.grid().n_points())
       throw std::invalid_argument("contact solver: the heights do not match the grid");
     if (!std::all_of(heights_.begin(), heights_.end(), [](double h) { return std::isfinite(h); }))
       throw std::invalid_argument("contact solver: the heights hold NaN or Inf");
-    if (!(E_star > 0))
-      throw std::invalid_argument("contact solver: E* must be positive");
+    if (!(E_star > 0) || !std::isfinite(E_star))
+      throw std::invalid_argument("contact solver: E* must be positive and finite");
+    if (!(adhesion.work >= 0) || !std::isfinite(adhesion.work))
+      throw std::invalid_argument(formatted(
+          "contact solver: the work of adhesion w = %g J/m^2 is outside the allowed range [0, inf) (0: no adhesion)",
+          adhesion.work));
+    if (adhesion.active())
+      {
+        if (!(adhesion.range > 0) || !std::isfinite(adhesion.range))
+          throw std::invalid_argument(formatted(
+              "contact solver: the adhesive range rho = %g m is outside the allowed range (0, inf)", adhesion.range));
+        const double zone = adhesion.process_zone(E_star), spacing = grid_spacing(transform.grid());
+        if (!(zone >= min_process_zone_points * spacing))
+          throw std::invalid_argument(formatted(
+              "contact solver: the cohesive zone E* rho^2/(pi w) = %.3g m spans %.3g grid spacings; at least %g "
+              "are needed (a finer grid or a longer range)",
+              zone, zone / spacing, min_process_zone_points));
+      }
     const double h_mean = mean(heights_);
     double       square = 0;
     for (const double h : heights_)
@@ -64,125 +130,270 @@ namespace penny
     height_scale = std::sqrt(square / heights_.size());
     if (!(height_scale > 0))
       throw std::invalid_argument("contact solver: a flat surface is in full contact at any load");
-    compliance = transform.tabulate([E_star](const Wavevector &q) {
-      return std::complex<double>(q.kx == 0 && q.ky == 0 ? 0. : 2 / (E_star * q.norm()));
+
+    // The mean mode has no stiffness; the preconditioner gives it the
+    // compliance of the longest wavelength of the period.
+    const PeriodicGrid &grid    = transform.grid();
+    const double        q_min   = 2 * M_PI / std::max(grid.nx > 1 ? grid.lx : 0, grid.ny > 1 ? grid.ly : 0);
+    const double        modulus = E_star;
+    stiffness = transform.tabulate([=](const Wavevector &q) { return std::complex<double>(modulus / 2 * q.norm()); });
+    compliance = transform.tabulate([=](const Wavevector &q) {
+      return std::complex<double>(2 / (modulus * (q.kx == 0 && q.ky == 0 ? q_min : q.norm())));
     });
+    GridField impulse(heights_.size(), 0.);
+    impulse[0] = 1;
+    transform.apply(compliance, impulse, impulse);
+    point_compliance = impulse[0];
+    full_contact     = full_contact_pressure(transform, heights_, E_star);
   }
 
-  void HalfSpaceContact::displacement(const GridField &pressure, GridField &u) const
-  {
-    transform.apply(compliance, pressure, u);
-  }
-
-  // Polonsky and Keer (1999), with g the gap centred on the contact set:
-  //   t = g + delta (G/G_old) t on the contact set (conjugate direction),
-  //   r = u(t) centred, tau = (g.t)/(r.t), p -= tau t, p = max(p, 0),
-  //   points with p = 0 and g < 0 (overlap) get p = -tau g and reset the
-  //   conjugacy (delta = 0), and p is scaled to mean p_bar.
-  // The residual is checked before each step, on the gap of the current p.
   ContactSolution HalfSpaceContact::solve(const double mean_pressure, const ContactSolverControl &control,
-                                          const GridField &initial_pressure) const
+                                          const GridField &initial_gap) const
   {
-    if (!(mean_pressure > 0))
-      throw std::invalid_argument("contact solver: the mean pressure must be positive");
+    if (!std::isfinite(mean_pressure) || (!adhesion_.active() && !(mean_pressure > 0)))
+      throw std::invalid_argument(formatted("contact solver: the mean pressure %g Pa is outside the allowed range "
+                                            "(0, inf) without adhesion, (-inf, inf) with it",
+                                            mean_pressure));
+    GridField gap = initial_gap.empty() ? GridField(heights_.size(), 0.) : initial_gap;
+    return minimise(Control::mean_pressure, mean_pressure, control, std::move(gap));
+  }
+
+  ContactSolution HalfSpaceContact::solve_at_mean_gap(const double mean_gap, const ContactSolverControl &control,
+                                                      const GridField &initial_gap) const
+  {
+    if (!(mean_gap > 0) || !std::isfinite(mean_gap))
+      throw std::invalid_argument(
+          formatted("contact solver: the mean gap %g m is outside the allowed range (0, inf)", mean_gap));
+    GridField    gap     = initial_gap.empty() ? GridField(heights_.size(), 0.) : initial_gap;
+    const double current = gap.size() == heights_.size() ? mean(gap) : 0;
+    for (double &g : gap)
+      g = current > 0 ? g * mean_gap / current : mean_gap;
+    return minimise(Control::mean_gap, mean_gap, control, std::move(gap));
+  }
+
+  // Bound-constrained conjugate gradients in the gap (Polonsky and Keer's
+  // iteration turned round, with Vollebregt's continuation across changes of
+  // the free set and a Fourier preconditioner; doc/contact-notes.md):
+  //
+  //   r = p_el + phi'(g) + mu                      the gradient (mu = p_bar)
+  //   F = {g > 0} or {g = 0, r < 0}                the points free to move
+  //   z = P_F C P_F r                              C = 2/(E* |q|): the displacement r would cause
+  //   d = -z + beta d,  beta = max(0, z.(r - r_old)/(z_old.r_old))
+  //   g = max(g + alpha d, 0),                     alpha the first minimum of Pi along d
+  //
+  // Preconditioned by the compliance, the stiffness on the free set has a
+  // condition number that grows only like the logarithm of the points per
+  // gap, so the iterations hardly grow with the grid. At a prescribed mean gap,
+  // mu is the unknown p_bar, corrected each step so that z (and d) keep the
+  // mean of g. A free point at the wall whose preconditioned step would close
+  // it further is held in contact for that step.
+  ContactSolution HalfSpaceContact::minimise(const Control control, const double value,
+                                             const ContactSolverControl &solver, GridField gap) const
+  {
     const std::size_t n = heights_.size();
+    if (gap.size() != n)
+      throw std::invalid_argument("contact solver: the initial gap does not match the grid");
+    for (double &g : gap)
+      if (!(g >= 0) || !std::isfinite(g))
+        throw std::invalid_argument("contact solver: the initial gap must be finite and >= 0");
 
-    GridField pressure;
-    if (initial_pressure.empty())
+    const bool    fixed_load = control == Control::mean_pressure;
+    const bool    adhesive   = adhesion_.active();
+    double *const work       = transform_.work_array();
+
+    GridField                  gradient(n), previous_gradient(n, 0.), step(n), direction(n, 0.), slope(n, 0.);
+    GridField                  mean_response; // P_F C P_F 1, at a prescribed mean gap
+    std::vector<unsigned char> free(n);
+    double                     mu = value;
+
+    // At a prescribed mean gap: shift step by a multiple of P_F C P_F 1 so
+    // that it keeps the mean of g, and mu and the gradient with it.
+    const auto keep_mean_gap = [&]() {
+      for (std::size_t i = 0; i < n; ++i)
+        work[i] = free[i];
+      transform_.convolve_work_array(compliance);
+      mean_response.resize(n);
+      double step_sum = 0, response_sum = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          mean_response[i] = free[i] ? work[i] : 0;
+          step_sum += step[i];
+          response_sum += mean_response[i];
+        }
+      const double shift = -step_sum / response_sum;
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          step[i] += shift * mean_response[i];
+          gradient[i] += shift;
+        }
+      mu += shift;
+    };
+
+    double       residual = 0, previous_product = 0;
+    unsigned int iteration;
+    for (iteration = 0;; ++iteration)
       {
-        pressure = full_contact_pressure(transform, heights_, E_star);
-        for (double &p : pressure)
-          p += mean_pressure;
-      }
-    else if (initial_pressure.size() == n)
-      pressure = initial_pressure;
-    else
-      throw std::invalid_argument("contact solver: the initial pressure does not match the grid");
-    make_admissible(pressure, mean_pressure);
-
-    GridField gap(n), direction(n, 0.), response(n);
-    double    delta = 0, G_old = 1, residual = 0;
-    for (unsigned int iteration = 0; iteration <= control.max_iterations; ++iteration)
-      {
-        displacement(pressure, gap);
-        for (std::size_t i = 0; i < n; ++i)
-          gap[i] -= heights_[i];
-        centre_on_contact(pressure, gap);
-
-        double G = 0, violation = 0;
-        for (std::size_t i = 0; i < n; ++i)
-          if (pressure[i] > 0)
-            G += gap[i] * gap[i];
-          else if (gap[i] < 0)
-            violation += gap[i] * gap[i];
-        residual = std::sqrt((G + violation) / n) / height_scale;
-        if (residual <= control.tolerance)
+        // The gradient r = p_fc + K g + mu + phi'(g) and the free set; the
+        // work array is left holding P_F r.
+        std::copy(gap.begin(), gap.end(), work);
+        transform_.convolve_work_array(stiffness);
+        if (adhesive)
+          for (std::size_t i = 0; i < n; ++i)
+            slope[i] = gap[i] < adhesion_.reach() ? adhesion_.slope(gap[i]) : 0;
+        if (iteration == 0 && !fixed_load)
           {
-            const double contact =
-                std::count_if(pressure.begin(), pressure.end(), [](double p) { return p > 0; });
-            return {std::move(pressure), std::move(gap), contact / n, iteration, residual};
+            // mu starts as the traction that balances the gap points on average.
+            double      sum   = 0;
+            std::size_t count = 0;
+            for (std::size_t i = 0; i < n; ++i)
+              if (gap[i] > 0)
+                {
+                  sum += full_contact[i] + work[i] + slope[i];
+                  ++count;
+                }
+            mu = -sum / count;
+          }
+        for (std::size_t i = 0; i < n; ++i)
+          {
+            gradient[i] = full_contact[i] + work[i] + mu + slope[i];
+            free[i]     = gap[i] > 0 || gradient[i] < 0;
+            work[i]     = free[i] ? gradient[i] : 0;
+          }
+        transform_.convolve_work_array(compliance);
+        for (std::size_t i = 0; i < n; ++i)
+          step[i] = free[i] ? work[i] : 0;
+        if (!fixed_load)
+          keep_mean_gap();
+
+        double square = 0;
+        for (std::size_t i = 0; i < n; ++i)
+          square += step[i] * step[i];
+        residual = std::sqrt(square / n) / height_scale;
+        if (residual <= solver.tolerance)
+          break;
+        if (iteration == solver.max_iterations)
+          throw std::runtime_error(
+              formatted("contact solver: no convergence in %.0f iterations (residual %.3g > tolerance %.3g)",
+                        solver.max_iterations, residual, solver.tolerance));
+
+        // A point at the wall that pulls away (r < 0) but that the
+        // preconditioned step would push into it moves by the local
+        // compliance instead: -c r, c the diagonal of C. The step stays a
+        // descent direction and the point opens.
+        for (std::size_t i = 0; i < n; ++i)
+          if (free[i] && gap[i] == 0 && step[i] >= 0)
+            step[i] = point_compliance * gradient[i];
+
+        // Polak-Ribiere, never negative; a restart where that is no descent.
+        double product = 0, previous_overlap = 0;
+        for (std::size_t i = 0; i < n; ++i)
+          {
+            product += gradient[i] * step[i];
+            previous_overlap += previous_gradient[i] * step[i];
+          }
+        const double beta =
+            previous_product > 0 ? std::max(0., (product - previous_overlap) / previous_product) : 0;
+        double direction_sum = 0;
+        for (std::size_t i = 0; i < n; ++i)
+          {
+            direction[i] = free[i] ? -step[i] + beta * direction[i] : 0;
+            direction_sum += direction[i];
+          }
+        if (!fixed_load)
+          {
+            double response_sum = 0;
+            for (std::size_t i = 0; i < n; ++i)
+              response_sum += mean_response[i];
+            for (std::size_t i = 0; i < n; ++i)
+              direction[i] -= direction_sum / response_sum * mean_response[i];
+          }
+        double slope_along = 0;
+        for (std::size_t i = 0; i < n; ++i)
+          slope_along += gradient[i] * direction[i];
+        if (!(slope_along < 0))
+          {
+            for (std::size_t i = 0; i < n; ++i)
+              direction[i] = -step[i];
+            slope_along = -product;
           }
 
-        for (std::size_t i = 0; i < n; ++i)
-          direction[i] = pressure[i] > 0 ? gap[i] + delta * G / G_old * direction[i] : 0;
-        G_old = G;
+        std::copy(direction.begin(), direction.end(), work);
+        const double curvature = n * transform_.quadratic_form_of_work_array(stiffness);
+        const double alpha     = step_length(adhesion_, slope_along, curvature, gap, direction, slope);
 
-        displacement(direction, response);
-        centre_on_contact(pressure, response);
-        double gap_direction = 0, response_direction = 0;
+        // The step, clipped at the wall; a clipped point forgets its direction.
+        bool   clipped      = false;
+        double smallest_gap = std::numeric_limits<double>::infinity();
         for (std::size_t i = 0; i < n; ++i)
-          if (pressure[i] > 0)
-            {
-              gap_direction += gap[i] * direction[i];
-              response_direction += response[i] * direction[i];
-            }
-        if (!(response_direction > 0))
-          throw std::runtime_error("contact solver: breakdown at iteration " + std::to_string(iteration) +
-                                   " (no descent direction on the contact set)");
-        const double tau = gap_direction / response_direction;
-
-        for (std::size_t i = 0; i < n; ++i)
-          if (pressure[i] > 0)
-            pressure[i] = std::max(pressure[i] - tau * direction[i], 0.);
-        delta = 1;
-        for (std::size_t i = 0; i < n; ++i)
-          if (pressure[i] == 0 && gap[i] < 0)
-            {
-              pressure[i] = -tau * gap[i];
-              delta       = 0;
-            }
-        make_admissible(pressure, mean_pressure);
+          {
+            const double g = gap[i] + alpha * direction[i];
+            if (g <= 0)
+              {
+                gap[i]       = 0;
+                direction[i] = 0;
+                clipped      = true;
+              }
+            else
+              gap[i] = g;
+            smallest_gap = std::min(smallest_gap, gap[i]);
+          }
+        if (clipped && !fixed_load)
+          {
+            const double scale = value / mean(gap);
+            for (double &g : gap)
+              g *= scale;
+          }
+        if (fixed_load && !(value > 0) && smallest_gap >= adhesion_.reach())
+          throw std::runtime_error(formatted("contact solver: the surfaces separate at p_bar = %g Pa (no equilibrium "
+                                             "in contact: beyond the pull-off load)",
+                                             value));
+        std::swap(gradient, previous_gradient);
+        previous_product = product;
       }
-    char message[160];
-    std::snprintf(message, sizeof message,
-                  "contact solver: no convergence in %u iterations (residual %.3g > tolerance %.3g)",
-                  control.max_iterations, residual, control.tolerance);
-    throw std::runtime_error(message);
+
+    ContactSolution solution;
+    solution.mean_pressure    = mu;
+    solution.mean_gap         = mean(gap);
+    solution.iterations       = iteration;
+    solution.residual         = residual;
+    solution.pressure.resize(n);
+    double elastic = 0, interaction = 0;
+    std::size_t contact = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        solution.pressure[i] = (gap[i] > 0 ? 0 : std::max(gradient[i], 0.)) - slope[i];
+        elastic += (gap[i] + heights_[i]) * (gradient[i] - mu - slope[i]);
+        if (adhesive)
+          interaction += adhesion_.energy(gap[i]);
+        contact += gap[i] == 0;
+      }
+    solution.energy           = (elastic / 2 + interaction) / n;
+    solution.contact_fraction = double(contact) / n;
+    solution.gap              = std::move(gap);
+    return solution;
   }
 
   std::vector<LoadStep> load_sweep(const HalfSpaceContact &contact, const std::vector<double> &mean_pressures,
                                    const ContactSolverControl &control)
   {
+    if (contact.adhesion().active())
+      throw std::invalid_argument("load_sweep: with adhesion the equilibrium depends on the path (ContactPath)");
     std::vector<std::size_t> order(mean_pressures.size());
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(),
               [&](std::size_t a, std::size_t b) { return mean_pressures[a] > mean_pressures[b]; });
 
     std::vector<LoadStep> steps(mean_pressures.size());
-    GridField             pressure;
-    double                previous_load = 0;
+    GridField             gap;
     for (const std::size_t k : order)
       {
-        const double p_bar = mean_pressures[k];
-        for (double &p : pressure)
-          p += p_bar - previous_load;
-        ContactSolution solution = contact.solve(p_bar, control, pressure);
-        steps[k]      = {p_bar, 1 - solution.contact_fraction, solution.iterations, solution.residual};
-        pressure      = std::move(solution.pressure);
-        previous_load = p_bar;
+        ContactSolution solution = contact.solve(mean_pressures[k], control, gap);
+        steps[k] = {mean_pressures[k], 1 - solution.contact_fraction, solution.iterations, solution.residual};
+        gap      = std::move(solution.gap);
       }
     return steps;
   }
+
   double edge_from_gap(const std::vector<double> &gaps)
   {
     const int n = gaps.size();

@@ -1,14 +1,25 @@
-// Frictionless, adhesionless contact of a rigid periodic rough surface h(x, y)
-// (m) with an elastic half-space of plane-strain modulus E* (Pa) at a
-// prescribed mean pressure p_bar (Pa), by the FFT-based boundary-element
-// method (doc/theory.md, section 7). The half-space's surface displacement under
-// a periodic pressure is u^_q = 2 p^_q/(E* |q|) (q != 0; the mean displacement
-// is the rigid-body approach and drops out), and the solution is the pressure
-// p >= 0 with mean p_bar and gap g = u - h + const >= 0, p g = 0: the minimiser
-// of the complementary energy p.u/2 - p.h under those constraints, found by
-// Polonsky and Keer's (1999) constrained conjugate gradients.
+// Frictionless contact of a rigid periodic rough surface h(x, y) (m) with an
+// elastic half-space of plane-strain modulus E* (Pa), a hard wall plus an
+// optional short-range adhesion (adhesion.h), by the FFT-based boundary-element
+// method (doc/contact-notes.md).
+//
+// The unknown is the gap g >= 0. The half-space's surface displacement is
+// u = g + h - (rigid approach), and a periodic displacement needs the traction
+// (K u)^_q = (E*/2) |q| u^_q (q != 0), so with <.> the mean over the period
+//
+//   elastic traction  p_el = p_bar + K (g + h) = p_bar + p_fc + K g  (compressive positive),
+//   energy per area   Pi(g) = (1/2) <(g + h) K (g + h)> + <phi(g)> + p_bar <g>,
+//
+// p_fc = K h the full-contact pressure less its mean. Equilibrium is a local
+// minimum of Pi over g >= 0 at a prescribed mean pressure p_bar, or over
+// g >= 0 with <g> = g_bar at a prescribed mean gap (then p_bar is the
+// multiplier of that constraint). Its gradient r = p_el + phi'(g) vanishes
+// where g > 0 and is the wall's reaction (>= 0) where g = 0. Without adhesion
+// Pi is convex and the equilibrium unique; with adhesion several equilibria
+// coexist and the one found depends on the start (contact_path.h).
 #pragma once
 
+#include "contact/adhesion.h"
 #include "contact/half_space.h"
 
 #include <vector>
@@ -23,40 +34,68 @@ namespace penny
 
   struct ContactSolution
   {
-    GridField    pressure;         // p >= 0 (Pa), mean exactly p_bar
-    GridField    gap;              // g (m), shifted to mean zero over the contact points
-    double       contact_fraction; // share of grid points with p > 0
+    GridField pressure;         // p (Pa): the wall's reaction plus the attraction -phi'(g) where g = 0, -phi'(g) in the gaps
+    GridField gap;              // g >= 0 (m), zero exactly on the contact points
+    double    mean_pressure;    // p_bar (Pa): prescribed, or the result at a prescribed mean gap
+    double    mean_gap;         // <g> (m)
+    double    contact_fraction; // share of grid points with g = 0
+    double    energy;           // Pi (J/m^2)
     unsigned int iterations;
-    // The violation of the contact conditions, in units of the rms height:
-    // sqrt((sum_{p > 0} g^2 + sum_{p = 0, g < 0} g^2)/N)/h_rms.
+    // The displacement that the unbalanced traction of the gap points would
+    // cause there, rms over the grid in units of the rms height (doc/contact-notes.md).
     double residual;
   };
 
   class HalfSpaceContact
   {
   public:
-    // `transform` must outlive the object; heights on its grid (m).
-    HalfSpaceContact(const FourierTransform &transform, GridField heights, double E_star);
+    // `transform` must outlive the object; heights on its grid (m). With
+    // adhesion, w and rho must be positive and finite and the cohesive zone
+    // must span at least `min_process_zone_points` grid spacings.
+    HalfSpaceContact(const FourierTransform &transform, GridField heights, double E_star,
+                     const Adhesion &adhesion = {});
 
-    // The contact at mean pressure p_bar > 0. Starts from `initial_pressure`
-    // (clipped at 0 and scaled to mean p_bar) or, if empty, from the clipped
-    // full-contact pressure p_bar + p_fc, which is the solution when no gap
-    // opens. Throws std::runtime_error (one line) if the residual does not
-    // fall below the tolerance within max_iterations.
+    static constexpr double min_process_zone_points = 4;
+
+    // Equilibrium at mean pressure p_bar (compressive positive; without
+    // adhesion p_bar > 0), reached by descent from `initial_gap` (>= 0) or,
+    // if empty, from full contact g = 0 (the solution whenever no gap opens;
+    // with adhesion also the full-contact branch). Throws std::runtime_error
+    // (one line) if the residual does not fall below the tolerance within
+    // max_iterations, or if the surfaces separate (p_bar beyond the pull-off load).
     ContactSolution solve(double mean_pressure, const ContactSolverControl &control,
-                          const GridField &initial_pressure = {}) const;
+                          const GridField &initial_gap = {}) const;
 
-    const GridField &heights() const { return heights_; }
+    // Equilibrium at mean gap g_bar > 0 (displacement control), from
+    // `initial_gap` scaled to that mean or, if empty or zero, from the uniform
+    // gap g_bar. It passes the load extremes (pull-off, jump into contact)
+    // that end a path at prescribed mean pressure.
+    ContactSolution solve_at_mean_gap(double mean_gap, const ContactSolverControl &control,
+                                      const GridField &initial_gap = {}) const;
+
+    const GridField        &heights() const { return heights_; }
+    const FourierTransform &transform() const { return transform_; }
+    const Adhesion         &adhesion() const { return adhesion_; }
+    double                  plane_strain_modulus() const { return E_star; }
 
   private:
-    // u = 2/(E* |q|) p^ (zero mean).
-    void displacement(const GridField &pressure, GridField &u) const;
+    enum class Control
+    {
+      mean_pressure,
+      mean_gap
+    };
+    ContactSolution minimise(Control control, double value, const ContactSolverControl &solver,
+                             GridField gap) const;
 
-    const FourierTransform    &transform;
+    const FourierTransform    &transform_;
     GridField                  heights_;
     double                     E_star;
+    Adhesion                   adhesion_;
     double                     height_scale; // rms of h about its mean
-    FourierTransform::Spectrum compliance;
+    GridField                  full_contact; // p_fc (Pa)
+    FourierTransform::Spectrum stiffness;    // (E*/2) |q|, zero at q = 0
+    FourierTransform::Spectrum compliance;   // its inverse, 2/(E* q_min) at q = 0
+    double point_compliance;                 // the diagonal of C: the displacement of a point under its own unit load
   };
 
   // One load of a sweep: the non-contact share of the grid points and the
@@ -70,8 +109,7 @@ namespace penny
   };
 
   // A_nc/A_0 at several mean pressures, solved from the largest down, each
-  // solve started from the previous pressure shifted by the change in load
-  // (near full contact the change is almost uniform). Returned in the order given.
+  // solve started from the previous gap. Returned in the order given.
   std::vector<LoadStep> load_sweep(const HalfSpaceContact &contact, const std::vector<double> &mean_pressures,
                                    const ContactSolverControl &control);
 

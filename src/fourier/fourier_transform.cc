@@ -18,17 +18,17 @@ namespace penny
     return std::hypot(qx, qy);
   }
 
-  FourierTransform::FourierTransform(const PeriodicGrid &grid) : grid_(grid)
+  FourierTransform::FourierTransform(const PeriodicGrid &grid, const Planning planning) : grid_(grid)
   {
     if (grid.nx == 0 || grid.ny == 0 || !(grid.lx > 0) || !(grid.ly > 0))
       throw std::invalid_argument("FourierTransform: the grid needs nx, ny >= 1 points and lx, ly > 0");
     real_buffer    = fftw_alloc_real(grid.n_points());
     complex_buffer = reinterpret_cast<std::complex<double> *>(fftw_alloc_complex(n_coefficients()));
-    // FFTW_ESTIMATE picks the plan without timing runs: the same algorithm, so
-    // the same rounding, on every rank and in every run.
-    auto *spectrum = reinterpret_cast<fftw_complex *>(complex_buffer);
-    forward_plan   = fftw_plan_dft_r2c_2d(grid.nx, grid.ny, real_buffer, spectrum, FFTW_ESTIMATE);
-    inverse_plan   = fftw_plan_dft_c2r_2d(grid.nx, grid.ny, spectrum, real_buffer, FFTW_ESTIMATE);
+    // FFTW_MEASURE overwrites the arrays while it plans; they hold nothing yet.
+    const unsigned int flags    = planning == Planning::estimate ? FFTW_ESTIMATE : FFTW_MEASURE;
+    auto              *spectrum = reinterpret_cast<fftw_complex *>(complex_buffer);
+    forward_plan                = fftw_plan_dft_r2c_2d(grid.nx, grid.ny, real_buffer, spectrum, flags);
+    inverse_plan                = fftw_plan_dft_c2r_2d(grid.nx, grid.ny, spectrum, real_buffer, flags);
   }
 
   FourierTransform::~FourierTransform()
@@ -83,12 +83,34 @@ namespace penny
   void FourierTransform::apply(const Spectrum &multiplier, const GridField &in, GridField &out) const
   {
     std::copy(in.begin(), in.end(), real_buffer);
+    convolve_work_array(multiplier);
+    out.assign(real_buffer, real_buffer + grid_.n_points());
+  }
+
+  void FourierTransform::convolve_work_array(const Spectrum &multiplier) const
+  {
     fftw_execute(static_cast<fftw_plan>(forward_plan));
     const double scale = 1. / grid_.n_points();
     for (std::size_t c = 0; c < multiplier.size(); ++c)
       complex_buffer[c] *= scale * multiplier[c];
     fftw_execute(static_cast<fftw_plan>(inverse_plan));
-    out.assign(real_buffer, real_buffer + grid_.n_points());
+    ++n_convolutions;
+  }
+
+  double FourierTransform::quadratic_form_of_work_array(const Spectrum &multiplier) const
+  {
+    fftw_execute(static_cast<fftw_plan>(forward_plan));
+    // Each coefficient with 0 < ky < ny/2 stands for itself and its conjugate at -q.
+    const unsigned int n_y = grid_.ny / 2 + 1;
+    double             sum = 0;
+    for (std::size_t c = 0; c < multiplier.size(); ++c)
+      {
+        const unsigned int j      = c % n_y;
+        const double       weight = j == 0 || (grid_.ny % 2 == 0 && j == grid_.ny / 2) ? 1 : 2;
+        sum += weight * multiplier[c].real() * std::norm(complex_buffer[c]);
+      }
+    const double scale = 1. / grid_.n_points();
+    return sum * scale * scale;
   }
 
   std::complex<double> derivative_factor(const Wavevector &q, const unsigned int order_x,

@@ -43,6 +43,19 @@ namespace penny
     double norm() const;
   };
 
+  // How FFTW chooses its algorithm for a grid. `estimate` picks it without
+  // timing runs: the same algorithm, so the same rounding, in every run and on
+  // every rank of the same hardware. `measure` times candidates when the
+  // transform is made (about 1 s at 2048^2) and is about twice as fast at
+  // 2048^2 and 4096^2, but may pick another algorithm in another run, so
+  // results can differ in the last bits (and iterative solvers' results by up
+  // to their tolerance) from run to run.
+  enum class Planning
+  {
+    estimate,
+    measure
+  };
+
   // Real-to-complex FFTs (FFTW, r2c/c2r) on one grid. The spectrum holds the
   // half plane ky >= 0, nx x (ny/2 + 1) coefficients in FFTW's layout; the
   // other half is the complex conjugate (Hermitian symmetry of a real field).
@@ -52,7 +65,7 @@ namespace penny
   public:
     using Spectrum = std::vector<std::complex<double>>;
 
-    explicit FourierTransform(const PeriodicGrid &grid);
+    explicit FourierTransform(const PeriodicGrid &grid, Planning planning = Planning::estimate);
     ~FourierTransform();
     FourierTransform(const FourierTransform &)            = delete;
     FourierTransform &operator=(const FourierTransform &) = delete;
@@ -73,12 +86,27 @@ namespace penny
     // out = F^-1[m(q) F[in]]; `out` may be `in`.
     void apply(const Spectrum &multiplier, const GridField &in, GridField &out) const;
 
+    // The same in place on the transform's own real array (nx ny values in the
+    // layout of GridField), for iterative solvers that fill it, convolve and
+    // read it back without the two copies of apply().
+    double *work_array() const { return real_buffer; }
+    void    convolve_work_array(const Spectrum &multiplier) const;
+    // sum_q m(q) |f^_q|^2 over the whole spectrum (both halves) of the field f
+    // in the work array, by one r2c transform: for a real even m this is the
+    // mean <f M f> of the operator M = F^-1 m F (Parseval). The work array is lost.
+    double quadratic_form_of_work_array(const Spectrum &multiplier) const;
+
+    // Convolutions (one r2c and one c2r transform each) done so far, by apply
+    // and convolve_work_array: the cost measure of iterative solvers.
+    std::size_t convolutions() const { return n_convolutions; }
+
   private:
     PeriodicGrid          grid_;
     double               *real_buffer;
     std::complex<double> *complex_buffer;
     void                 *forward_plan;
     void                 *inverse_plan;
+    mutable std::size_t   n_convolutions = 0;
   };
 
   // The Fourier factor of d^(ox + oy)/dx^ox dy^oy, (i qx)^ox (i qy)^oy, zero
