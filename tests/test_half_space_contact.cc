@@ -1,6 +1,8 @@
-// The FFT boundary-element contact solver: Westergaard's sinusoid (contact
-// half-width and pressure), complementarity on a random surface, full
-// contact, warm-started load sweeps, and errors as exceptions.
+// The FFT boundary-element contact solver without adhesion: Westergaard's
+// sinusoid (contact half-width and pressure), equilibrium on a random surface
+// checked the other way round (the gap the reported pressure makes), full
+// contact, warm-started load sweeps, iterations that do not grow with the
+// grid, and errors as exceptions.
 #define BOOST_TEST_MODULE half_space_contact
 #define BOOST_TEST_NO_MAIN
 #include "closed_forms/periodic_array.h"
@@ -49,7 +51,7 @@ BOOST_AUTO_TEST_CASE(westergaard_sinusoid_at_256_points)
 
       // The strip is centred on the crest x = lambda/2 (i = n/2).
       unsigned int last = n / 2;
-      while (solution.pressure[(last + 1) * grid.ny] > 0)
+      while (solution.gap[(last + 1) * grid.ny] == 0)
         ++last;
       std::vector<double> gaps;
       for (unsigned int k = 1; k <= 8; ++k)
@@ -69,12 +71,15 @@ BOOST_AUTO_TEST_CASE(westergaard_sinusoid_at_256_points)
     }
 }
 
-BOOST_AUTO_TEST_CASE(complementarity_on_a_random_surface)
+BOOST_AUTO_TEST_CASE(equilibrium_on_a_random_surface)
 {
-  // p >= 0, mean p = p_bar, gap >= 0 and p gap = 0 to the solver tolerance:
-  // the residual is the rms of the gap on the contact points and of the
-  // overlap elsewhere (in units of h_rms); pointwise both stay within 10 times
-  // the tolerance (measured: 3.4 times).
+  // The solver iterates on the gap; checked here the other way round, as
+  // Polonsky and Keer's solver did: the reported pressure p >= 0 (zero in the
+  // gaps), with mean p_bar to the tolerance, displaces the surface by C p,
+  // and the gap C p - h + const it implies must vanish on the contact points
+  // and be >= 0 elsewhere: rms violation (in units of the rms height) within
+  // 10 times the solver's tolerance (measured: 0.62 times), and the same share
+  // of points in contact. The mean pressure is p_bar to 1e-9 (measured: 1e-12).
   const PowerSpectrum    spectrum = power_law_spectrum(0.5, 2 * M_PI / lambda, 16, 1e-5);
   const PeriodicGrid     grid     = square_grid(128, 2 * lambda);
   const FourierTransform transform(grid);
@@ -84,20 +89,40 @@ BOOST_AUTO_TEST_CASE(complementarity_on_a_random_surface)
   const double tolerance = 1e-10;
   const ContactSolution solution = contact.solve(sqrt_V, {5000, tolerance});
 
-  double h_mean = 0, h_square = 0, p_mean = 0, largest_violation = 0;
-  for (std::size_t i = 0; i < h.size(); ++i)
+  const std::size_t n = h.size();
+  double            h_mean = 0, h_square = 0, p_mean = 0, in_contact = 0;
+  for (std::size_t i = 0; i < n; ++i)
     {
-      h_mean += h[i] / h.size();
-      h_square += h[i] * h[i] / h.size();
-      p_mean += solution.pressure[i] / h.size();
+      h_mean += h[i] / n;
+      h_square += h[i] * h[i] / n;
+      p_mean += solution.pressure[i] / n;
+      BOOST_TEST_REQUIRE(solution.gap[i] >= 0);
       BOOST_TEST_REQUIRE(solution.pressure[i] >= 0);
-      largest_violation = std::max(largest_violation,
-                                   solution.pressure[i] > 0 ? std::abs(solution.gap[i]) : -solution.gap[i]);
+      if (solution.gap[i] > 0)
+        BOOST_TEST_REQUIRE(solution.pressure[i] == 0);
+      in_contact += solution.gap[i] == 0;
     }
   const double h_rms = std::sqrt(h_square - h_mean * h_mean);
-  BOOST_TEST(p_mean == sqrt_V, tt::tolerance(1e-13));
+  BOOST_TEST(p_mean == sqrt_V, tt::tolerance(1e-9));
   BOOST_TEST(solution.residual <= tolerance);
-  BOOST_TEST(largest_violation <= 10 * tolerance * h_rms);
+  BOOST_TEST(in_contact / n == solution.contact_fraction);
+
+  const auto compliance = transform.tabulate([](const Wavevector &q) {
+    return std::complex<double>(q.kx == 0 && q.ky == 0 ? 0. : 2 / (E_star * q.norm()));
+  });
+  GridField implied;
+  transform.apply(compliance, solution.pressure, implied);
+  double shift = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    if (solution.gap[i] == 0)
+      shift += (implied[i] - h[i]) / in_contact;
+  double violation = 0;
+  for (std::size_t i = 0; i < n; ++i)
+    {
+      const double g = implied[i] - h[i] - shift;
+      violation += solution.gap[i] == 0 ? g * g : std::pow(std::min(g, 0.), 2);
+    }
+  BOOST_TEST(std::sqrt(violation / n) / h_rms <= 10 * tolerance);
   // Near p_bar = sqrt(V) both contact and gaps hold a fair share of the points.
   BOOST_TEST(solution.contact_fraction > 0.5);
   BOOST_TEST(solution.contact_fraction < 0.95);
@@ -139,6 +164,26 @@ BOOST_AUTO_TEST_CASE(load_sweep_matches_single_solves)
   BOOST_TEST(steps[0].noncontact_fraction > steps[1].noncontact_fraction);
 }
 
+BOOST_AUTO_TEST_CASE(iterations_do_not_grow_with_the_grid)
+{
+  // The same surface (a seed fixes it on any grid) at p_bar = 2 sqrt(V),
+  // 8 and 32 points per shortest wavelength: the compliance preconditioner
+  // keeps the iterations nearly constant (measured: 10 and 13; Polonsky and
+  // Keer's solver needed 56 and 135).
+  const PowerSpectrum       spectrum = power_law_spectrum(0.75, 2 * M_PI / lambda, 16, 1e-5);
+  std::vector<unsigned int> iterations;
+  for (const unsigned int n : {128u, 512u})
+    {
+      const PeriodicGrid     grid = square_grid(n, lambda);
+      const FourierTransform transform(grid);
+      const HalfSpaceContact contact(transform, gaussian_field(transform, spectrum, 7), E_star);
+      const double sqrt_V = std::sqrt(lattice_moments(grid, pressure_spectrum(spectrum, E_star)).expected.m0);
+      iterations.push_back(contact.solve(2 * sqrt_V, {1000, 1e-8}).iterations);
+    }
+  BOOST_TEST(iterations[1] <= 1.3 * iterations[0] + 2);
+  BOOST_TEST(iterations[1] <= 20u);
+}
+
 BOOST_AUTO_TEST_CASE(errors_are_exceptions)
 {
   const PeriodicGrid     grid{64, 4, lambda, 4 * lambda / 64};
@@ -146,10 +191,13 @@ BOOST_AUTO_TEST_CASE(errors_are_exceptions)
   const HalfSpaceContact contact(transform, sinusoid(grid), E_star);
   BOOST_CHECK_EXCEPTION(
       contact.solve(0.3 * p_star, {2, 1e-14}), std::runtime_error, [](const std::runtime_error &e) {
-        return std::string(e.what()).find("no convergence in 2 iterations") != std::string::npos;
+        return std::string(e.what()).find("no convergence in 2 iterations (residual ") != std::string::npos;
       });
   BOOST_CHECK_THROW(contact.solve(-1, {100, 1e-10}), std::invalid_argument);
+  BOOST_CHECK_THROW(contact.solve(std::nan(""), {100, 1e-10}), std::invalid_argument);
   BOOST_CHECK_THROW(contact.solve(p_star, {100, 1e-10}, GridField(3, 1.)), std::invalid_argument);
+  BOOST_CHECK_THROW(contact.solve(p_star, {100, 1e-10}, GridField(grid.n_points(), -1.)), std::invalid_argument);
+  BOOST_CHECK_THROW(contact.solve_at_mean_gap(0, {100, 1e-10}), std::invalid_argument);
   BOOST_CHECK_THROW(HalfSpaceContact(transform, GridField(grid.n_points(), 1.), E_star),
                     std::invalid_argument);
   BOOST_CHECK_THROW(HalfSpaceContact(transform, GridField(5, 1.), E_star), std::invalid_argument);

@@ -38,11 +38,12 @@ namespace penny
       return spacing;
     }
 
-    // The first minimum of the energy along g + alpha d (alpha > 0): its
-    // elastic part is alpha r.d + alpha^2 d.Kd/2 (before clipping at the wall),
-    // its interaction part sums over the moving points, each clipped there:
+    // The first minimum of the energy along g + alpha d (alpha > 0) before
+    // clipping at the wall: the elastic part is alpha r.d + alpha^2 d.Kd/2, the
+    // interaction continues beyond the wall with the slope it has there, so
     //   E'(alpha) = r.d + alpha d.Kd + sum_i [phi'(max(g_i + alpha d_i, 0)) - phi'(g_i)] d_i
-    // (phi' counted 0 at a clipped point). Without adhesion alpha = -r.d/d.Kd;
+    // is continuous. (Dropping the attraction at the wall instead puts a
+    // spurious minimum where a point with a tiny gap reaches it.) Without adhesion alpha = -r.d/d.Kd;
     // with it the minimum is bracketed by doubling and found by safeguarded
     // Newton. No bracket within 2^60 times the elastic step: nothing holds
     // the surfaces together along d.
@@ -65,9 +66,10 @@ namespace penny
               const double g = gap[i] + alpha * direction[i];
               if (gap[i] >= reach && g >= reach)
                 continue;
-              const double s = g > 0 ? adhesion.slope(g) : 0;
+              const double s = adhesion.slope(std::max(g, 0.));
               first += (s - slope[i]) * direction[i];
-              second -= s / adhesion.range * direction[i] * direction[i];
+              if (g > 0)
+                second -= s / adhesion.range * direction[i] * direction[i];
             }
         return first;
       };

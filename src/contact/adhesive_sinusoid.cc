@@ -1,0 +1,131 @@
+#include "contact/adhesive_sinusoid.h"
+
+#include "contact/contact_geometry.h"
+#include "contact/contact_path.h"
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace penny::adhesive_sinusoid
+{
+  double johnson_load(const double contact_ratio, const double alpha)
+  {
+    const double angle = M_PI * contact_ratio;
+    return std::pow(std::sin(angle), 2) - alpha * std::sqrt(std::tan(angle));
+  }
+
+  Extremum johnson_jump(const double alpha)
+  {
+    if (!(alpha > 0) || !(alpha < 25. / 16 * std::pow(0.6, 0.75)))
+      throw std::invalid_argument("johnson_jump: alpha is outside the allowed range (0, (25/16) (3/5)^(3/4))");
+    const auto stationarity = [&](const double u) { return 4 * u * u * u - alpha * std::pow(1 + std::pow(u, 4), 2); };
+    double     low = std::pow(0.6, 0.25), high = low;
+    while (stationarity(high) > 0)
+      high *= 2;
+    for (int k = 0; k < 200; ++k)
+      {
+        const double middle = (low + high) / 2;
+        (stationarity(middle) > 0 ? low : high) = middle;
+      }
+    const double contact_ratio = std::atan(low * low) / M_PI;
+    return {contact_ratio, johnson_load(contact_ratio, alpha)};
+  }
+
+  namespace
+  {
+    const double h0 = 1 / M_PI; // p* = pi E* h0/lambda = 1
+  }
+
+  Model::Model(const Discretisation &discretisation)
+      : discretisation(discretisation),
+        range(discretisation.alpha * std::sqrt(M_PI * discretisation.process_zone / 2))
+  {
+    if (!(discretisation.alpha > 0) || !(discretisation.process_zone > 0) || discretisation.n_points < 16)
+      throw std::invalid_argument("adhesive sinusoid: needs alpha > 0, l_pz > 0 and at least 16 points");
+    const unsigned int n = discretisation.n_points;
+    transform = std::make_unique<FourierTransform>(PeriodicGrid{n, 1, 1., 1. / n});
+    GridField h(n);
+    for (unsigned int i = 0; i < n; ++i)
+      h[i] = 2 * h0 * std::pow(std::sin(M_PI * i / n), 2);
+    const double w = discretisation.alpha * discretisation.alpha / 2;
+    contact        = std::make_unique<HalfSpaceContact>(*transform, std::move(h), 1., Adhesion{w, range});
+  }
+
+  // The strip is centred on the crest x = lambda/2 (i = n/2); its edges are
+  // where the gap reaches rho.
+  CurvePoint Model::state(const ContactSolution &solution) const
+  {
+    const double half_width = level_radius(transform->grid(), solution.gap, range, discretisation.n_points / 2, 0);
+    return {half_width, solution.mean_pressure, solution.mean_gap / h0, solution.iterations};
+  }
+
+  std::vector<CurvePoint> Model::loads_at_half_widths(const std::vector<double> &contact_ratios,
+                                                      const ContactSolverControl &control) const
+  {
+    // Start from the adhesionless strip of the first half-width (Westergaard's load).
+    const HalfSpaceContact plain(*transform, contact->heights(), 1.);
+    ContactSolution        current = plain.solve(std::pow(std::sin(M_PI * contact_ratios.front()), 2), control);
+    current                        = contact->solve_at_mean_gap(current.mean_gap, control, current.gap);
+    CurvePoint              point  = state(current);
+    unsigned int            iterations = current.iterations;
+    std::vector<CurvePoint> points;
+    for (const double target : contact_ratios)
+      {
+        // a/lambda falls as the mean gap rises. Bracket the target by steps
+        // of 10 %, then regula falsi (Illinois) on the bracket.
+        const auto at = [&](const double mean_gap) {
+          current = contact->solve_at_mean_gap(mean_gap * h0, control, current.gap);
+          iterations += current.iterations;
+          return state(current);
+        };
+        CurvePoint low = point, high = point; // a(low) >= target >= a(high), low.mean_gap <= high.mean_gap
+        while (low.contact_ratio < target)
+          low = at(low.mean_gap * 0.9);
+        while (high.contact_ratio > target)
+          high = at(high.mean_gap * 1.1);
+        // f = a/lambda - target, f(low) > 0 > f(high); the end kept twice running has its f halved.
+        double f_low = low.contact_ratio - target, f_high = high.contact_ratio - target;
+        int    kept  = 0; // +1: low kept last time, -1: high
+        point        = std::abs(f_low) < std::abs(f_high) ? low : high;
+        for (unsigned int k = 0; std::abs(point.contact_ratio - target) > 1e-9; ++k)
+          {
+            if (k == 100)
+              throw std::runtime_error("adhesive sinusoid: no mean gap found for a/lambda = " +
+                                       std::to_string(target));
+            point          = at((low.mean_gap * f_high - high.mean_gap * f_low) / (f_high - f_low));
+            const double f = point.contact_ratio - target;
+            if (f > 0)
+              {
+                low   = point;
+                f_low = f;
+                if (kept == -1)
+                  f_high /= 2;
+                kept = -1;
+              }
+            else
+              {
+                high   = point;
+                f_high = f;
+                if (kept == 1)
+                  f_low /= 2;
+                kept = 1;
+              }
+          }
+        point.iterations = iterations;
+        points.push_back(point);
+        iterations = 0;
+      }
+    return points;
+  }
+
+  CurvePoint Model::jump_into_contact(const ContactSolverControl &control) const
+  {
+    // From the strip of a/lambda = 0.3, the mean gap falls by 10 % a step.
+    const CurvePoint      start = loads_at_half_widths({0.3}, control).back();
+    const ContactSolution from  = contact->solve_at_mean_gap(start.mean_gap * h0, control);
+    CurvePoint            jump  = state(load_extremum(*contact, control, from, 0.9, true));
+    jump.iterations             = 0;
+    return jump;
+  }
+} // namespace penny::adhesive_sinusoid

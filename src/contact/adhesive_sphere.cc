@@ -1,0 +1,76 @@
+#include "contact/adhesive_sphere.h"
+
+#include "contact/contact_geometry.h"
+#include "contact/contact_path.h"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace penny::adhesive_sphere
+{
+  double jkr_load(const double contact_radius)
+  {
+    const double a3 = std::pow(contact_radius, 3);
+    return 4 * a3 / 3 - std::sqrt(8 * M_PI * work_of_adhesion * a3);
+  }
+
+  Model::Model(const Discretisation &discretisation)
+      : discretisation(discretisation),
+        range_(std::sqrt(M_PI * work_of_adhesion * discretisation.process_zone))
+  {
+    if (!(discretisation.process_zone > 0) || !(discretisation.period > 4) || discretisation.n_points < 16)
+      throw std::invalid_argument("adhesive sphere: needs l_pz > 0, a period above 4 a_pull-off and 16 points");
+    const unsigned int n = discretisation.n_points;
+    const double       L = discretisation.period;
+    transform            = std::make_unique<FourierTransform>(square_grid(n, L));
+    // The apex at the grid point (n/2, n/2); x, y periodic offsets from it.
+    GridField h(transform->grid().n_points());
+    for (unsigned int i = 0; i < n; ++i)
+      for (unsigned int j = 0; j < n; ++j)
+        {
+          const double x = (double(i) - n / 2) * L / n, y = (double(j) - n / 2) * L / n;
+          h[i * n + j]   = -(x * x + y * y) / 2;
+        }
+    contact = std::make_unique<HalfSpaceContact>(*transform, std::move(h), 1., Adhesion{work_of_adhesion, range_});
+  }
+
+  State Model::state(const ContactSolution &solution) const
+  {
+    const double area = std::pow(discretisation.period, 2);
+    const double a    = level_radius(transform->grid(), solution.gap, range_, discretisation.n_points / 2,
+                                     discretisation.n_points / 2);
+    return {a, solution.mean_pressure * area, solution.mean_gap};
+  }
+
+  // Hertz's contact of JKR's zero-load radius 2^(2/3) (load 4 a^3/3 = 16/3),
+  // then adhesion switched on at its mean gap.
+  ContactSolution Model::start(const ContactSolverControl &control) const
+  {
+    const HalfSpaceContact plain(*transform, contact->heights(), 1.);
+    const ContactSolution  hertz = plain.solve(16. / 3 / std::pow(discretisation.period, 2), control);
+    return contact->solve_at_mean_gap(hertz.mean_gap, control, hertz.gap);
+  }
+
+  std::vector<State> Model::unloading(const ContactSolverControl &control, const unsigned int steps,
+                                      const double increment) const
+  {
+    const ContactSolution from = start(control);
+    ContactPath           path(*contact, "unloading", control, from.gap);
+    std::vector<State>    states;
+    double                mean_gap = from.mean_gap;
+    for (unsigned int k = 0; k <= steps; ++k)
+      {
+        states.push_back(state(path.to_mean_gap(mean_gap)));
+        mean_gap += increment;
+      }
+    return states;
+  }
+
+  State Model::pull_off(const ContactSolverControl &control) const
+  {
+    const ContactSolution from = start(control);
+    // Steps of about a twentieth of the approach between zero load and pull-off.
+    const double factor = 1 + 0.05 / from.mean_gap;
+    return state(load_extremum(*contact, control, from, factor, false));
+  }
+} // namespace penny::adhesive_sphere

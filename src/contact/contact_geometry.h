@@ -1,0 +1,32 @@
+// The shape of a contact solution on its periodic grid: how many contact
+// regions and gaps it has, and how large a round one is.
+#pragma once
+
+#include "fourier/fourier_transform.h"
+
+namespace penny
+{
+  // Connected regions of contact (g = 0) and of non-contact (g > 0) on the
+  // periodic grid, points joined to their four neighbours.
+  struct ContactTopology
+  {
+    unsigned int contacts;
+    unsigned int gaps;
+
+    bool operator==(const ContactTopology &other) const
+    {
+      return contacts == other.contacts && gaps == other.gaps;
+    }
+  };
+  ContactTopology contact_topology(const PeriodicGrid &grid, const GridField &gap);
+
+  // The equivalent radius sqrt(area/pi) of the region around the grid point
+  // (i, j) bounded by the level f = `level` (m): along `rays` rays from the
+  // point, f interpolated bilinearly (linearly on an n x 1 grid, two rays) is
+  // followed until it crosses the level, the crossing is found by bisection,
+  // and sqrt(<r^2>) over the rays is the radius of the circle of the same area
+  // (the region must be star-shaped about the point). Throws
+  // std::runtime_error if a ray meets no crossing within half the period.
+  double level_radius(const PeriodicGrid &grid, const GridField &f, double level, unsigned int i, unsigned int j,
+                      unsigned int rays = 256);
+} // namespace penny
