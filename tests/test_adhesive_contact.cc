@@ -27,7 +27,7 @@ namespace
   // l_pz = 4e-3 (16 points at n = 4096).
   const unsigned int n      = 4096;
   const double       alpha  = 0.2;
-  const Adhesion     sticky = {alpha * alpha / 2, alpha * std::sqrt(M_PI * 4e-3 / 2)};
+  const Adhesion     sticky = {alpha * alpha / 2, alpha *std::sqrt(M_PI * 4e-3 / 2)};
 
   GridField sinusoid(const PeriodicGrid &grid)
   {
@@ -52,8 +52,9 @@ namespace
     const FourierTransform &transform = contact.transform();
     const double            E_star    = contact.plane_strain_modulus();
     const Adhesion         &adhesion  = contact.adhesion();
-    const auto stiffness = transform.tabulate([=](const Wavevector &q) { return std::complex<double>(E_star / 2 * q.norm()); });
-    GridField  displacement(solution.gap), traction;
+    const auto              stiffness =
+        transform.tabulate([=](const Wavevector &q) { return std::complex<double>(E_star / 2 * q.norm()); });
+    GridField displacement(solution.gap), traction;
     for (std::size_t i = 0; i < displacement.size(); ++i)
       displacement[i] += contact.heights()[i];
     transform.apply(stiffness, displacement, traction);
@@ -94,7 +95,8 @@ BOOST_AUTO_TEST_CASE(equilibrium_on_the_sinusoid_and_a_random_surface)
     const GridField        h = gaussian_field(transform, spectrum, 11);
     const double sqrt_V = std::sqrt(lattice_moments(grid, pressure_spectrum(spectrum, E_star)).expected.m0);
     // w and rho with a cohesive zone of 6 grid spacings and a strength of sqrt(V)/2.
-    const double strength = 0.5 * sqrt_V, zone = 6 * lambda / 128, w = zone * M_PI * strength * strength / E_star;
+    const double strength = 0.5 * sqrt_V, zone = 6 * lambda / 128,
+                 w = zone * M_PI * strength * strength / E_star;
     const HalfSpaceContact plain(transform, h, E_star);
     const HalfSpaceContact contact(transform, h, E_star, {w, w / strength});
     const ContactSolution  start    = plain.solve(sqrt_V, {1000, 1e-10});
@@ -111,9 +113,9 @@ BOOST_AUTO_TEST_CASE(prescribed_mean_gap_and_mean_pressure_agree)
   const FourierTransform transform(PeriodicGrid{n, 1, 1., 1. / n});
   const HalfSpaceContact plain(transform, sinusoid(transform.grid()), 1.);
   const HalfSpaceContact contact(transform, sinusoid(transform.grid()), 1., sticky);
-  const ContactSolution  start      = plain.solve(0.3, {1000, 1e-11});
-  const ContactSolution  at_gap     = contact.solve_at_mean_gap(0.8 * start.mean_gap, {10000, 1e-11}, start.gap);
-  const ContactSolution  at_load    = contact.solve(at_gap.mean_pressure, {10000, 1e-11}, start.gap);
+  const ContactSolution  start   = plain.solve(0.3, {1000, 1e-11});
+  const ContactSolution  at_gap  = contact.solve_at_mean_gap(0.8 * start.mean_gap, {10000, 1e-11}, start.gap);
+  const ContactSolution  at_load = contact.solve(at_gap.mean_pressure, {10000, 1e-11}, start.gap);
   BOOST_TEST(at_load.mean_gap == at_gap.mean_gap, tt::tolerance(1e-7));
   BOOST_TEST(at_load.contact_fraction == at_gap.contact_fraction);
   BOOST_TEST(at_gap.mean_gap == 0.8 * start.mean_gap, tt::tolerance(1e-12));
@@ -126,9 +128,9 @@ BOOST_AUTO_TEST_CASE(hysteresis_and_jumps_along_paths)
   // contact: adhesion holds it while the tension p* - p_bar stays below the
   // strength w/rho = 1.26 p*, a different state at the same load; at
   // p_bar = -0.3 p* the surfaces separate (Johnson's pull-off: -0.056 p*).
-  const FourierTransform transform(PeriodicGrid{n, 1, 1., 1. / n});
-  const HalfSpaceContact plain(transform, sinusoid(transform.grid()), 1.);
-  const HalfSpaceContact contact(transform, sinusoid(transform.grid()), 1., sticky);
+  const FourierTransform     transform(PeriodicGrid{n, 1, 1., 1. / n});
+  const HalfSpaceContact     plain(transform, sinusoid(transform.grid()), 1.);
+  const HalfSpaceContact     contact(transform, sinusoid(transform.grid()), 1., sticky);
   const ContactSolverControl control{20000, 1e-10};
   ContactPath                loading(contact, "loading", control, plain.solve(0.3, control).gap);
   const double               gap_at_0_3 = loading.to_mean_pressure(0.3).mean_gap;
@@ -182,8 +184,8 @@ BOOST_AUTO_TEST_CASE(topology_and_equivalent_radius)
   for (unsigned int i = 0; i < 64; ++i)
     for (unsigned int j = 0; j < 64; ++j)
       {
-        const double r1 = std::hypot(double(i) - 32, double(j) - 32);
-        const double r2 = std::hypot(std::min<double>(i, 64 - i), double(j) - 20);
+        const double r1        = std::hypot(double(i) - 32, double(j) - 32);
+        const double r2        = std::hypot(std::min<double>(i, 64 - i), double(j) - 20);
         gaps[i * 64 + j]       = r1 < 10 || r2 < 6 ? 1 : 0;
         paraboloid[i * 64 + j] = r1 * r1;
       }
@@ -234,15 +236,16 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused_in_one_line)
                           [](const std::invalid_argument &e) { return says(e, "adhesive range rho = "); });
   // A cohesive zone of 1 grid spacing: refused, saying how many it spans and needs.
   const double zone = 1. / n, w = 0.02;
-  BOOST_CHECK_EXCEPTION(HalfSpaceContact(transform, h, 1., {w, std::sqrt(M_PI * w * zone)}), std::invalid_argument,
-                        [](const std::invalid_argument &e) {
+  BOOST_CHECK_EXCEPTION(HalfSpaceContact(transform, h, 1., {w, std::sqrt(M_PI * w * zone)}),
+                        std::invalid_argument, [](const std::invalid_argument &e) {
                           return says(e, "spans 1 grid spacings; at least 4 are needed") &&
                                  std::string(e.what()).find('\n') == std::string::npos;
                         });
   const HalfSpaceContact contact(transform, h, 1., sticky);
   BOOST_CHECK_THROW(load_sweep(contact, {0.1, 0.2}, {100, 1e-10}), std::invalid_argument);
-  BOOST_CHECK_EXCEPTION(contact.solve(0.2, {3, 1e-12}, HalfSpaceContact(transform, h, 1.).solve(0.2, {1000, 1e-10}).gap),
-                        std::runtime_error,
-                        [](const std::runtime_error &e) { return says(e, "no convergence in 3 iterations (residual "); });
+  BOOST_CHECK_EXCEPTION(
+      contact.solve(0.2, {3, 1e-12}, HalfSpaceContact(transform, h, 1.).solve(0.2, {1000, 1e-10}).gap),
+      std::runtime_error,
+      [](const std::runtime_error &e) { return says(e, "no convergence in 3 iterations (residual "); });
   BOOST_CHECK_THROW(contact.solve(inf, {100, 1e-10}), std::invalid_argument);
 }

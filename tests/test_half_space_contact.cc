@@ -89,7 +89,7 @@ BOOST_AUTO_TEST_CASE(equilibrium_on_a_random_surface)
   const double tolerance = 1e-10;
   const ContactSolution solution = contact.solve(sqrt_V, {5000, tolerance});
 
-  const std::size_t n = h.size();
+  const std::size_t n      = h.size();
   double            h_mean = 0, h_square = 0, p_mean = 0, in_contact = 0;
   for (std::size_t i = 0; i < n; ++i)
     {
@@ -110,7 +110,7 @@ BOOST_AUTO_TEST_CASE(equilibrium_on_a_random_surface)
   const auto compliance = transform.tabulate([](const Wavevector &q) {
     return std::complex<double>(q.kx == 0 && q.ky == 0 ? 0. : 2 / (E_star * q.norm()));
   });
-  GridField implied;
+  GridField  implied;
   transform.apply(compliance, solution.pressure, implied);
   double shift = 0;
   for (std::size_t i = 0; i < n; ++i)
@@ -196,7 +196,8 @@ BOOST_AUTO_TEST_CASE(errors_are_exceptions)
   BOOST_CHECK_THROW(contact.solve(-1, {100, 1e-10}), std::invalid_argument);
   BOOST_CHECK_THROW(contact.solve(std::nan(""), {100, 1e-10}), std::invalid_argument);
   BOOST_CHECK_THROW(contact.solve(p_star, {100, 1e-10}, GridField(3, 1.)), std::invalid_argument);
-  BOOST_CHECK_THROW(contact.solve(p_star, {100, 1e-10}, GridField(grid.n_points(), -1.)), std::invalid_argument);
+  BOOST_CHECK_THROW(contact.solve(p_star, {100, 1e-10}, GridField(grid.n_points(), -1.)),
+                    std::invalid_argument);
   BOOST_CHECK_THROW(contact.solve_at_mean_gap(0, {100, 1e-10}), std::invalid_argument);
   BOOST_CHECK_THROW(HalfSpaceContact(transform, GridField(grid.n_points(), 1.), E_star),
                     std::invalid_argument);

@@ -10,11 +10,11 @@ namespace penny::adhesive_bisinusoid
 {
   namespace
   {
-    const double cell       = 1 / std::sqrt(2.);              // lambda/sqrt(2)
-    const double amplitude  = 1 / (std::sqrt(2.) * M_PI);     // Delta: p* = sqrt(2) pi E* Delta/lambda = 1
-    const double rp         = 1 / (4 * M_PI * M_PI);          // R_p = 1/(p* k^2)
-    const double gap_factor = 0.8492635438677062;             // c_min = gap_factor (R_p K_Ic)^(2/5)
-  } // namespace
+    const double cell       = 1 / std::sqrt(2.);          // lambda/sqrt(2)
+    const double amplitude  = 1 / (std::sqrt(2.) * M_PI); // Delta: p* = sqrt(2) pi E* Delta/lambda = 1
+    const double rp         = 1 / (4 * M_PI * M_PI);      // R_p = 1/(p* k^2)
+    const double gap_factor = 0.8492635438677062;         // c_min = gap_factor (R_p K_Ic)^(2/5)
+  }                                                       // namespace
 
   double isolated_noncontact_fraction(const double load_ratio)
   {
@@ -29,13 +29,15 @@ namespace penny::adhesive_bisinusoid
   // P(c) = c^2/(3 R_p) + sqrt(pi) K_Ic/(2 sqrt(c)) rises for c > c_min: bisection there.
   std::optional<double> isolated_gap_radius(const double load_margin, const double alpha)
   {
-    const auto   tension = [&](const double c) { return c * c / (3 * rp) + std::sqrt(M_PI) * alpha / (2 * std::sqrt(c)); };
-    double       low     = gap_factor * std::pow(rp * alpha, 0.4), high = 1;
+    const auto tension = [&](const double c) {
+      return c * c / (3 * rp) + std::sqrt(M_PI) * alpha / (2 * std::sqrt(c));
+    };
+    double low = gap_factor * std::pow(rp * alpha, 0.4), high = 1;
     if (load_margin < tension(low))
       return std::nullopt;
     for (int k = 0; k < 200; ++k)
       {
-        const double middle = (low + high) / 2;
+        const double middle                          = (low + high) / 2;
         (tension(middle) < load_margin ? low : high) = middle;
       }
     return (low + high) / 2;
@@ -61,7 +63,7 @@ namespace penny::adhesive_bisinusoid
 
   State Model::state(const ContactSolution &solution) const
   {
-    State              s{solution.mean_pressure, solution.mean_gap, 1 - solution.contact_fraction, std::nullopt};
+    State s{solution.mean_pressure, solution.mean_gap, 1 - solution.contact_fraction, std::nullopt};
     const unsigned int centre = discretisation.n_points / 2;
     if (discretisation.alpha > 0)
       {
@@ -73,11 +75,12 @@ namespace penny::adhesive_bisinusoid
     return s;
   }
 
-  std::vector<State> Model::loading(const std::vector<double> &load_ratios, const ContactSolverControl &control) const
+  std::vector<State> Model::loading(const std::vector<double>  &load_ratios,
+                                    const ContactSolverControl &control) const
   {
     const HalfSpaceContact plain(*transform, contact->heights(), 1.);
-    ContactPath        path(*contact, "loading", control, plain.solve(load_ratios.front(), control).gap);
-    std::vector<State> states;
+    ContactPath            path(*contact, "loading", control, plain.solve(load_ratios.front(), control).gap);
+    std::vector<State>     states;
     for (const double load : load_ratios)
       states.push_back(state(path.to_mean_pressure(load)));
     return states;
@@ -88,9 +91,10 @@ namespace penny::adhesive_bisinusoid
     if (!(discretisation.alpha > 0))
       throw std::invalid_argument("adhesive bi-sinusoid: without adhesion the gaps close only at p_bar = p*");
     const HalfSpaceContact plain(*transform, contact->heights(), 1.);
-    const ContactSolution  from = contact->solve(start_load_ratio, control, plain.solve(start_load_ratio, control).gap);
+    const ContactSolution  from =
+        contact->solve(start_load_ratio, control, plain.solve(start_load_ratio, control).gap);
     if (!(from.contact_fraction < 1))
       throw std::runtime_error("adhesive bi-sinusoid: the gap is already closed at the start load");
-    return state(load_extremum(*contact, control, from, 0.9, true));
+    return state(load_extremum(*contact, control, from, 0.8, true));
   }
 } // namespace penny::adhesive_bisinusoid

@@ -59,11 +59,12 @@ namespace penny::adhesive_bisinusoid
 
     // Equilibria at increasing p_bar/p* along a loading path from the
     // adhesionless gap at the first load (with adhesion: then switched on).
-    std::vector<State> loading(const std::vector<double> &load_ratios, const ContactSolverControl &control) const;
+    std::vector<State> loading(const std::vector<double>  &load_ratios,
+                               const ContactSolverControl &control) const;
 
     // With adhesion: the load at which the gap snaps shut on loading, the
-    // largest p_bar/p* along a path of falling mean gap from the gap at
-    // `start_load_ratio`.
+    // largest p_bar/p* along a path of falling mean gap (by 20 % a step)
+    // from the gap at `start_load_ratio`.
     State closure(double start_load_ratio, const ContactSolverControl &control) const;
 
   private:

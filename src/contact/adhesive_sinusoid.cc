@@ -18,14 +18,17 @@ namespace penny::adhesive_sinusoid
   Extremum johnson_jump(const double alpha)
   {
     if (!(alpha > 0) || !(alpha < 25. / 16 * std::pow(0.6, 0.75)))
-      throw std::invalid_argument("johnson_jump: alpha is outside the allowed range (0, (25/16) (3/5)^(3/4))");
-    const auto stationarity = [&](const double u) { return 4 * u * u * u - alpha * std::pow(1 + std::pow(u, 4), 2); };
-    double     low = std::pow(0.6, 0.25), high = low;
+      throw std::invalid_argument(
+          "johnson_jump: alpha is outside the allowed range (0, (25/16) (3/5)^(3/4))");
+    const auto stationarity = [&](const double u) {
+      return 4 * u * u * u - alpha * std::pow(1 + std::pow(u, 4), 2);
+    };
+    double low = std::pow(0.6, 0.25), high = low;
     while (stationarity(high) > 0)
       high *= 2;
     for (int k = 0; k < 200; ++k)
       {
-        const double middle = (low + high) / 2;
+        const double middle                     = (low + high) / 2;
         (stationarity(middle) > 0 ? low : high) = middle;
       }
     const double contact_ratio = std::atan(low * low) / M_PI;
@@ -44,7 +47,7 @@ namespace penny::adhesive_sinusoid
     if (!(discretisation.alpha > 0) || !(discretisation.process_zone > 0) || discretisation.n_points < 16)
       throw std::invalid_argument("adhesive sinusoid: needs alpha > 0, l_pz > 0 and at least 16 points");
     const unsigned int n = discretisation.n_points;
-    transform = std::make_unique<FourierTransform>(PeriodicGrid{n, 1, 1., 1. / n});
+    transform            = std::make_unique<FourierTransform>(PeriodicGrid{n, 1, 1., 1. / n});
     GridField h(n);
     for (unsigned int i = 0; i < n; ++i)
       h[i] = 2 * h0 * std::pow(std::sin(M_PI * i / n), 2);
@@ -56,18 +59,19 @@ namespace penny::adhesive_sinusoid
   // where the gap reaches rho.
   CurvePoint Model::state(const ContactSolution &solution) const
   {
-    const double half_width = level_radius(transform->grid(), solution.gap, range, discretisation.n_points / 2, 0);
+    const double half_width =
+        level_radius(transform->grid(), solution.gap, range, discretisation.n_points / 2, 0);
     return {half_width, solution.mean_pressure, solution.mean_gap / h0, solution.iterations};
   }
 
-  std::vector<CurvePoint> Model::loads_at_half_widths(const std::vector<double> &contact_ratios,
+  std::vector<CurvePoint> Model::loads_at_half_widths(const std::vector<double>  &contact_ratios,
                                                       const ContactSolverControl &control) const
   {
     // Start from the adhesionless strip of the first half-width (Westergaard's load).
     const HalfSpaceContact plain(*transform, contact->heights(), 1.);
-    ContactSolution        current = plain.solve(std::pow(std::sin(M_PI * contact_ratios.front()), 2), control);
-    current                        = contact->solve_at_mean_gap(current.mean_gap, control, current.gap);
-    CurvePoint              point  = state(current);
+    ContactSolution current = plain.solve(std::pow(std::sin(M_PI * contact_ratios.front()), 2), control);
+    current                 = contact->solve_at_mean_gap(current.mean_gap, control, current.gap);
+    CurvePoint              point      = state(current);
     unsigned int            iterations = current.iterations;
     std::vector<CurvePoint> points;
     for (const double target : contact_ratios)
@@ -86,8 +90,8 @@ namespace penny::adhesive_sinusoid
           high = at(high.mean_gap * 1.1);
         // f = a/lambda - target, f(low) > 0 > f(high); the end kept twice running has its f halved.
         double f_low = low.contact_ratio - target, f_high = high.contact_ratio - target;
-        int    kept  = 0; // +1: low kept last time, -1: high
-        point        = std::abs(f_low) < std::abs(f_high) ? low : high;
+        int    kept = 0; // +1: low kept last time, -1: high
+        point       = std::abs(f_low) < std::abs(f_high) ? low : high;
         for (unsigned int k = 0; std::abs(point.contact_ratio - target) > 1e-9; ++k)
           {
             if (k == 100)

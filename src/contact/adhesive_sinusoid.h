@@ -60,7 +60,7 @@ namespace penny::adhesive_sinusoid
     // p_bar/p* at each a/lambda (increasing, inside the curve's range),
     // found by a secant iteration on the mean gap down a path of decreasing
     // mean gap (the contact grows), each solve started from the previous one.
-    std::vector<CurvePoint> loads_at_half_widths(const std::vector<double> &contact_ratios,
+    std::vector<CurvePoint> loads_at_half_widths(const std::vector<double>  &contact_ratios,
                                                  const ContactSolverControl &control) const;
 
     // The jump into full contact: the largest p_bar/p* along that path

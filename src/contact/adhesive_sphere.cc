@@ -19,7 +19,8 @@ namespace penny::adhesive_sphere
         range_(std::sqrt(M_PI * work_of_adhesion * discretisation.process_zone))
   {
     if (!(discretisation.process_zone > 0) || !(discretisation.period > 4) || discretisation.n_points < 16)
-      throw std::invalid_argument("adhesive sphere: needs l_pz > 0, a period above 4 a_pull-off and 16 points");
+      throw std::invalid_argument(
+          "adhesive sphere: needs l_pz > 0, a period above 4 a_pull-off and 16 points");
     const unsigned int n = discretisation.n_points;
     const double       L = discretisation.period;
     transform            = std::make_unique<FourierTransform>(square_grid(n, L));
@@ -29,9 +30,10 @@ namespace penny::adhesive_sphere
       for (unsigned int j = 0; j < n; ++j)
         {
           const double x = (double(i) - n / 2) * L / n, y = (double(j) - n / 2) * L / n;
-          h[i * n + j]   = -(x * x + y * y) / 2;
+          h[i * n + j] = -(x * x + y * y) / 2;
         }
-    contact = std::make_unique<HalfSpaceContact>(*transform, std::move(h), 1., Adhesion{work_of_adhesion, range_});
+    contact =
+        std::make_unique<HalfSpaceContact>(*transform, std::move(h), 1., Adhesion{work_of_adhesion, range_});
   }
 
   State Model::state(const ContactSolution &solution) const

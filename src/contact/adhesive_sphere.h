@@ -51,7 +51,8 @@ namespace penny::adhesive_sphere
     // States along an unloading path at prescribed mean gap from JKR's
     // zero-load contact (a = 2^(2/3)), `steps` steps each raising the mean gap
     // by `increment` (in units of R... the model's length unit a_pull-off).
-    std::vector<State> unloading(const ContactSolverControl &control, unsigned int steps, double increment) const;
+    std::vector<State> unloading(const ContactSolverControl &control, unsigned int steps,
+                                 double increment) const;
 
     // The pull-off load under prescribed load: the least load along that path.
     State pull_off(const ContactSolverControl &control) const;

@@ -26,10 +26,9 @@ namespace penny
             const std::size_t  k = stack.back();
             const unsigned int i = k / grid.ny, j = k % grid.ny;
             stack.pop_back();
-            const std::size_t neighbours[4] = {((i + 1) % grid.nx) * grid.ny + j,
-                                               ((i + grid.nx - 1) % grid.nx) * grid.ny + j,
-                                               i * grid.ny + (j + 1) % grid.ny,
-                                               i * grid.ny + (j + grid.ny - 1) % grid.ny};
+            const std::size_t neighbours[4] = {
+                ((i + 1) % grid.nx) * grid.ny + j, ((i + grid.nx - 1) % grid.nx) * grid.ny + j,
+                i * grid.ny + (j + 1) % grid.ny, i * grid.ny + (j + grid.ny - 1) % grid.ny};
             for (const std::size_t m : neighbours)
               if (!seen[m] && (gap[m] > 0) == open)
                 {
@@ -47,35 +46,38 @@ namespace penny
     const double dx = grid.lx / grid.nx, dy = grid.ly / grid.ny;
     // f at (x, y) in grid units from (i, j), bilinear and periodic.
     const auto value = [&](const double x, const double y) {
-      const double      fx = std::floor(x), fy = std::floor(y), tx = x - fx, ty = y - fy;
-      const auto        at = [&](const long a, const long b) {
+      const double fx = std::floor(x), fy = std::floor(y), tx = x - fx, ty = y - fy;
+      const auto   at = [&](const long a, const long b) {
         const long nx = grid.nx, ny = grid.ny;
         return f[((i + a) % nx + nx) % nx * ny + ((j + b) % ny + ny) % ny];
       };
       const long a = fx, b = fy;
-      return (1 - tx) * ((1 - ty) * at(a, b) + ty * at(a, b + 1)) + tx * ((1 - ty) * at(a + 1, b) + ty * at(a + 1, b + 1));
+      return (1 - tx) * ((1 - ty) * at(a, b) + ty * at(a, b + 1)) +
+             tx * ((1 - ty) * at(a + 1, b) + ty * at(a + 1, b + 1));
     };
-    const bool   line   = grid.ny == 1;
-    const double centre = f[std::size_t(i) * grid.ny + j] - level;
-    const double reach  = (line ? grid.lx : std::min(grid.lx, grid.ly)) / 2;
-    const double step   = std::min(line ? dx : std::min(dx, dy), reach) / 2;
+    const bool         line   = grid.ny == 1;
+    const double       centre = f[std::size_t(i) * grid.ny + j] - level;
+    const double       reach  = (line ? grid.lx : std::min(grid.lx, grid.ly)) / 2;
+    const double       step   = std::min(line ? dx : std::min(dx, dy), reach) / 2;
     const unsigned int n_rays = line ? 2 : rays;
-    double       square = 0;
+    double             square = 0;
     for (unsigned int k = 0; k < n_rays; ++k)
       {
-        const double angle = line ? M_PI * k : 2 * M_PI * (k + 0.5) / n_rays, cx = std::cos(angle), cy = line ? 0 : std::sin(angle);
-        const auto   at    = [&](const double r) { return value(r * cx / dx, line ? 0 : r * cy / dy) - level; };
-        double       inner = 0, outer = step;
+        const double angle = line ? M_PI * k : 2 * M_PI * (k + 0.5) / n_rays, cx = std::cos(angle),
+                     cy  = line ? 0 : std::sin(angle);
+        const auto at    = [&](const double r) { return value(r * cx / dx, line ? 0 : r * cy / dy) - level; };
+        double     inner = 0, outer = step;
         while (at(outer) * centre > 0)
           {
             inner = outer;
             outer += step;
             if (outer > reach)
-              throw std::runtime_error("level_radius: a ray leaves the half period without crossing the level");
+              throw std::runtime_error(
+                  "level_radius: a ray leaves the half period without crossing the level");
           }
         for (int b = 0; b < 60; ++b)
           {
-            const double middle = (inner + outer) / 2;
+            const double middle                       = (inner + outer) / 2;
             (at(middle) * centre > 0 ? inner : outer) = middle;
           }
         square += std::pow((inner + outer) / 2, 2);

@@ -27,6 +27,6 @@ namespace penny
   // and sqrt(<r^2>) over the rays is the radius of the circle of the same area
   // (the region must be star-shaped about the point). Throws
   // std::runtime_error if a ray meets no crossing within half the period.
-  double level_radius(const PeriodicGrid &grid, const GridField &f, double level, unsigned int i, unsigned int j,
-                      unsigned int rays = 256);
+  double level_radius(const PeriodicGrid &grid, const GridField &f, double level, unsigned int i,
+                      unsigned int j, unsigned int rays = 256);
 } // namespace penny

@@ -6,8 +6,8 @@
 
 namespace penny
 {
-  ContactPath::ContactPath(const HalfSpaceContact &contact, std::string name, const ContactSolverControl &control,
-                           GridField initial_gap)
+  ContactPath::ContactPath(const HalfSpaceContact &contact, std::string name,
+                           const ContactSolverControl &control, GridField initial_gap)
       : contact(contact), name(std::move(name)), control(control)
   {
     current_.gap = std::move(initial_gap);
@@ -23,7 +23,8 @@ namespace penny
     return record(advance(Control::mean_gap, mean_gap));
   }
 
-  ContactSolution ContactPath::solve(const Control control_kind, const double value, const ContactSolution &from) const
+  ContactSolution ContactPath::solve(const Control control_kind, const double value,
+                                     const ContactSolution &from) const
   {
     return control_kind == Control::mean_pressure ? contact.solve(value, control, from.gap)
                                                   : contact.solve_at_mean_gap(value, control, from.gap);
@@ -37,8 +38,8 @@ namespace penny
     ContactSolution solution = solve(control_kind, target, current_);
     if (!contact.adhesion().active() || steps_.empty())
       return solution;
-    const PeriodicGrid &grid = contact.transform().grid();
-    ContactSolution     before = current_;
+    const PeriodicGrid &grid     = contact.transform().grid();
+    ContactSolution     before   = current_;
     ContactTopology     topology = steps_.back().topology;
     while (!(contact_topology(grid, solution.gap) == topology))
       {
@@ -69,9 +70,11 @@ namespace penny
   const ContactSolution &ContactPath::record(ContactSolution solution)
   {
     const ContactTopology topology = contact_topology(contact.transform().grid(), solution.gap);
-    const bool jumped = contact.adhesion().active() && !steps_.empty() && !(topology == steps_.back().topology);
-    steps_.push_back({name, static_cast<unsigned int>(steps_.size()), solution.mean_pressure, solution.mean_gap,
-                      solution.contact_fraction, solution.energy, topology, solution.iterations, jumped});
+    const bool            jumped =
+        contact.adhesion().active() && !steps_.empty() && !(topology == steps_.back().topology);
+    steps_.push_back({name, static_cast<unsigned int>(steps_.size()), solution.mean_pressure,
+                      solution.mean_gap, solution.contact_fraction, solution.energy, topology,
+                      solution.iterations, jumped});
     current_ = std::move(solution);
     return current_;
   }
@@ -98,16 +101,19 @@ namespace penny
     Sample c = at(b.mean_gap * factor, b.solution);
     for (unsigned int k = 0; c.f >= b.f; ++k)
       {
-        if (k == 1000)
-          throw std::runtime_error("load_extremum: no turn of the load in 1000 steps");
+        if (k == 1000 || c.mean_gap < 1e-9 * start.mean_gap || c.mean_gap > 1e9 * start.mean_gap)
+          throw std::runtime_error(
+              "load_extremum: the load does not turn (mean gap " + std::to_string(start.mean_gap) + " to " +
+              std::to_string(c.mean_gap) +
+              "): no extremum on this path (with adhesion, a cohesive zone too long for a jump?)");
         a = std::move(b);
         b = std::move(c);
         c = at(b.mean_gap * factor, b.solution);
       }
     // Now f(b) > f(a), f(c) with b between a and c.
     const double golden = 0.381966011250105;
-    for (unsigned int k = 0; k < 100 && std::abs(c.mean_gap - a.mean_gap) > relative_width * std::abs(b.mean_gap);
-         ++k)
+    for (unsigned int k = 0;
+         k < 100 && std::abs(c.mean_gap - a.mean_gap) > relative_width * std::abs(b.mean_gap); ++k)
       {
         const double x1 = a.mean_gap, x2 = b.mean_gap, x3 = c.mean_gap;
         const double numerator   = (x2 - x1) * (x2 - x1) * (b.f - c.f) - (x2 - x3) * (x2 - x3) * (b.f - a.f);
@@ -116,8 +122,8 @@ namespace penny
         // The parabola's vertex, unless it leaves the bracket or nearly repeats x2.
         if (!((x - x1) * (x - x3) < 0) || std::abs(x - x2) < 1e-3 * std::abs(x3 - x1))
           x = std::abs(x3 - x2) > std::abs(x1 - x2) ? x2 + golden * (x3 - x2) : x2 + golden * (x1 - x2);
-        Sample     trial        = at(x, b.solution);
-        const bool towards_c    = (x - x2) * (x3 - x2) > 0;
+        Sample     trial     = at(x, b.solution);
+        const bool towards_c = (x - x2) * (x3 - x2) > 0;
         if (trial.f > b.f)
           {
             (towards_c ? a : c) = std::move(b);

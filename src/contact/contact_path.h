@@ -69,5 +69,5 @@ namespace penny
   // mean gap the path passes it. Returns the best equilibrium found.
   ContactSolution load_extremum(const HalfSpaceContact &contact, const ContactSolverControl &control,
                                 const ContactSolution &start, double factor, bool largest,
-                                double relative_width = 1e-6);
+                                double relative_width = 1e-4);
 } // namespace penny

@@ -47,17 +47,18 @@ namespace penny
         }
       return result;
     };
-    Extrapolated       result = combine(weights(h, exponents));
-    const double       lower  = exponents.size() > 1
-                                    ? combine(weights(h, {exponents.begin(), exponents.end() - 1})).value
-                                    : values.back();
+    Extrapolated result = combine(weights(h, exponents));
+    const double lower  = exponents.size() > 1
+                              ? combine(weights(h, {exponents.begin(), exponents.end() - 1})).value
+                              : values.back();
     result.error += std::abs(result.value - lower);
     return result;
   }
 
   Extrapolated extrapolate_in_both(const std::vector<double> &l, const std::vector<double> &h,
                                    const std::vector<std::vector<double>> &values,
-                                   const std::vector<double> &exponents_l, const std::vector<double> &exponents_h)
+                                   const std::vector<double>              &exponents_l,
+                                   const std::vector<double>              &exponents_h)
   {
     std::vector<double> limits, errors;
     for (const std::vector<double> &row : values)

@@ -33,7 +33,8 @@ namespace penny
   // (exponents_l), the rows' error estimates carried into the second step.
   Extrapolated extrapolate_in_both(const std::vector<double> &l, const std::vector<double> &h,
                                    const std::vector<std::vector<double>> &values,
-                                   const std::vector<double> &exponents_l, const std::vector<double> &exponents_h);
+                                   const std::vector<double>              &exponents_l,
+                                   const std::vector<double>              &exponents_h);
 
   // The error exponent that three results at h, h/r, h/r^2 show:
   // log((A_0 - A_1)/(A_1 - A_2))/log(r) (NaN if the differences change sign).

@@ -53,7 +53,8 @@ namespace penny
       if (!adhesion.active())
         {
           if (!(curvature > 0))
-            throw std::runtime_error("contact solver: breakdown (no elastic stiffness along the search direction)");
+            throw std::runtime_error(
+                "contact solver: breakdown (no elastic stiffness along the search direction)");
           return -slope_along / curvature;
         }
       const double reach      = adhesion.reach();
@@ -74,7 +75,7 @@ namespace penny
         return first;
       };
       double alpha = curvature > 0 ? -slope_along / curvature : adhesion.range, low = 0,
-             high  = std::numeric_limits<double>::infinity();
+             high = std::numeric_limits<double>::infinity();
       for (unsigned int k = 0; k < 200; ++k)
         {
           double       second;
@@ -85,8 +86,9 @@ namespace penny
           if (std::isinf(high))
             {
               if (alpha > std::ldexp(curvature > 0 ? -slope_along / curvature : adhesion.range, 60))
-                throw std::runtime_error("contact solver: the surfaces separate (no equilibrium in contact at this "
-                                         "mean pressure: beyond the pull-off load)");
+                throw std::runtime_error(
+                    "contact solver: the surfaces separate (no equilibrium in contact at this "
+                    "mean pressure: beyond the pull-off load)");
               alpha = second > 0 && alpha - first / second > alpha ? alpha - first / second : 2 * alpha;
               continue;
             }
@@ -99,8 +101,8 @@ namespace penny
     }
   } // namespace
 
-  HalfSpaceContact::HalfSpaceContact(const FourierTransform &transform, GridField heights, const double E_star,
-                                     const Adhesion &adhesion)
+  HalfSpaceContact::HalfSpaceContact(const FourierTransform &transform, GridField heights,
+                                     const double E_star, const Adhesion &adhesion)
       : transform_(transform), heights_(std::move(heights)), E_star(E_star), adhesion_(adhesion)
   {
     if (heights_.size() != transform.grid().n_points())
@@ -110,20 +112,21 @@ namespace penny
     if (!(E_star > 0) || !std::isfinite(E_star))
       throw std::invalid_argument("contact solver: E* must be positive and finite");
     if (!(adhesion.work >= 0) || !std::isfinite(adhesion.work))
-      throw std::invalid_argument(formatted(
-          "contact solver: the work of adhesion w = %g J/m^2 is outside the allowed range [0, inf) (0: no adhesion)",
-          adhesion.work));
+      throw std::invalid_argument(formatted("contact solver: the work of adhesion w = %g J/m^2 is outside "
+                                            "the allowed range [0, inf) (0: no adhesion)",
+                                            adhesion.work));
     if (adhesion.active())
       {
         if (!(adhesion.range > 0) || !std::isfinite(adhesion.range))
-          throw std::invalid_argument(formatted(
-              "contact solver: the adhesive range rho = %g m is outside the allowed range (0, inf)", adhesion.range));
+          throw std::invalid_argument(
+              formatted("contact solver: the adhesive range rho = %g m is outside the allowed range (0, inf)",
+                        adhesion.range));
         const double zone = adhesion.process_zone(E_star), spacing = grid_spacing(transform.grid());
         if (!(zone >= min_process_zone_points * spacing))
-          throw std::invalid_argument(formatted(
-              "contact solver: the cohesive zone E* rho^2/(pi w) = %.3g m spans %.3g grid spacings; at least %g "
-              "are needed (a finer grid or a longer range)",
-              zone, zone / spacing, min_process_zone_points));
+          throw std::invalid_argument(formatted("contact solver: the cohesive zone E* rho^2/(pi w) = %.3g m "
+                                                "spans %.3g grid spacings; at least %g "
+                                                "are needed (a finer grid or a longer range)",
+                                                zone, zone / spacing, min_process_zone_points));
       }
     const double h_mean = mean(heights_);
     double       square = 0;
@@ -138,7 +141,8 @@ namespace penny
     const PeriodicGrid &grid    = transform.grid();
     const double        q_min   = 2 * M_PI / std::max(grid.nx > 1 ? grid.lx : 0, grid.ny > 1 ? grid.ly : 0);
     const double        modulus = E_star;
-    stiffness = transform.tabulate([=](const Wavevector &q) { return std::complex<double>(modulus / 2 * q.norm()); });
+    stiffness =
+        transform.tabulate([=](const Wavevector &q) { return std::complex<double>(modulus / 2 * q.norm()); });
     compliance = transform.tabulate([=](const Wavevector &q) {
       return std::complex<double>(2 / (modulus * (q.kx == 0 && q.ky == 0 ? q_min : q.norm())));
     });
@@ -153,15 +157,17 @@ namespace penny
                                           const GridField &initial_gap) const
   {
     if (!std::isfinite(mean_pressure) || (!adhesion_.active() && !(mean_pressure > 0)))
-      throw std::invalid_argument(formatted("contact solver: the mean pressure %g Pa is outside the allowed range "
-                                            "(0, inf) without adhesion, (-inf, inf) with it",
-                                            mean_pressure));
+      throw std::invalid_argument(
+          formatted("contact solver: the mean pressure %g Pa is outside the allowed range "
+                    "(0, inf) without adhesion, (-inf, inf) with it",
+                    mean_pressure));
     GridField gap = initial_gap.empty() ? GridField(heights_.size(), 0.) : initial_gap;
     return minimise(Control::mean_pressure, mean_pressure, control, std::move(gap));
   }
 
-  ContactSolution HalfSpaceContact::solve_at_mean_gap(const double mean_gap, const ContactSolverControl &control,
-                                                      const GridField &initial_gap) const
+  ContactSolution HalfSpaceContact::solve_at_mean_gap(const double                mean_gap,
+                                                      const ContactSolverControl &control,
+                                                      const GridField            &initial_gap) const
   {
     if (!(mean_gap > 0) || !std::isfinite(mean_gap))
       throw std::invalid_argument(
@@ -231,12 +237,24 @@ namespace penny
       mu += shift;
     };
 
+    // At a prescribed mean gap: the direction's mean removed along P_F C P_F 1.
+    const auto keep_mean_of_direction = [&]() {
+      double direction_sum = 0, response_sum = 0;
+      for (std::size_t i = 0; i < n; ++i)
+        {
+          direction_sum += direction[i];
+          response_sum += mean_response[i];
+        }
+      for (std::size_t i = 0; i < n; ++i)
+        direction[i] -= direction_sum / response_sum * mean_response[i];
+    };
+
     double       residual = 0, previous_product = 0;
     unsigned int iteration;
     for (iteration = 0;; ++iteration)
       {
-        // The gradient r = p_fc + K g + mu + phi'(g) and the free set; the
-        // work array is left holding P_F r.
+        // The gradient r = p_fc + K g + mu + phi'(g), the free set, and P_F r
+        // in the work array.
         std::copy(gap.begin(), gap.end(), work);
         transform_.convolve_work_array(stiffness);
         if (adhesive)
@@ -267,9 +285,20 @@ namespace penny
         if (!fixed_load)
           keep_mean_gap();
 
-        double square = 0;
+        // In one pass: the residual; a point at the wall that pulls away
+        // (r < 0) but that the preconditioned step would push into it moves
+        // by the local compliance instead, -c r (c the diagonal of C), so the
+        // step stays a descent direction and the point opens; and the
+        // products of Polak-Ribiere.
+        double square = 0, product = 0, previous_overlap = 0;
         for (std::size_t i = 0; i < n; ++i)
-          square += step[i] * step[i];
+          {
+            square += step[i] * step[i];
+            if (free[i] && gap[i] == 0 && step[i] >= 0)
+              step[i] = point_compliance * gradient[i];
+            product += gradient[i] * step[i];
+            previous_overlap += previous_gradient[i] * step[i];
+          }
         residual = std::sqrt(square / n) / height_scale;
         if (residual <= solver.tolerance)
           break;
@@ -278,48 +307,33 @@ namespace penny
               formatted("contact solver: no convergence in %.0f iterations (residual %.3g > tolerance %.3g)",
                         solver.max_iterations, residual, solver.tolerance));
 
-        // A point at the wall that pulls away (r < 0) but that the
-        // preconditioned step would push into it moves by the local
-        // compliance instead: -c r, c the diagonal of C. The step stays a
-        // descent direction and the point opens.
-        for (std::size_t i = 0; i < n; ++i)
-          if (free[i] && gap[i] == 0 && step[i] >= 0)
-            step[i] = point_compliance * gradient[i];
-
         // Polak-Ribiere, never negative; a restart where that is no descent.
-        double product = 0, previous_overlap = 0;
-        for (std::size_t i = 0; i < n; ++i)
-          {
-            product += gradient[i] * step[i];
-            previous_overlap += previous_gradient[i] * step[i];
-          }
         const double beta =
             previous_product > 0 ? std::max(0., (product - previous_overlap) / previous_product) : 0;
-        double direction_sum = 0;
         for (std::size_t i = 0; i < n; ++i)
-          {
-            direction[i] = free[i] ? -step[i] + beta * direction[i] : 0;
-            direction_sum += direction[i];
-          }
+          direction[i] = free[i] ? -step[i] + beta * direction[i] : 0;
         if (!fixed_load)
-          {
-            double response_sum = 0;
-            for (std::size_t i = 0; i < n; ++i)
-              response_sum += mean_response[i];
-            for (std::size_t i = 0; i < n; ++i)
-              direction[i] -= direction_sum / response_sum * mean_response[i];
-          }
+          keep_mean_of_direction();
         double slope_along = 0;
         for (std::size_t i = 0; i < n; ++i)
-          slope_along += gradient[i] * direction[i];
+          {
+            slope_along += gradient[i] * direction[i];
+            work[i] = direction[i];
+          }
         if (!(slope_along < 0))
           {
             for (std::size_t i = 0; i < n; ++i)
               direction[i] = -step[i];
-            slope_along = -product;
+            if (!fixed_load)
+              keep_mean_of_direction();
+            slope_along = 0;
+            for (std::size_t i = 0; i < n; ++i)
+              {
+                slope_along += gradient[i] * direction[i];
+                work[i] = direction[i];
+              }
           }
 
-        std::copy(direction.begin(), direction.end(), work);
         const double curvature = n * transform_.quadratic_form_of_work_array(stiffness);
         const double alpha     = step_length(adhesion_, slope_along, curvature, gap, direction, slope);
 
@@ -346,20 +360,21 @@ namespace penny
               g *= scale;
           }
         if (fixed_load && !(value > 0) && smallest_gap >= adhesion_.reach())
-          throw std::runtime_error(formatted("contact solver: the surfaces separate at p_bar = %g Pa (no equilibrium "
-                                             "in contact: beyond the pull-off load)",
-                                             value));
+          throw std::runtime_error(
+              formatted("contact solver: the surfaces separate at p_bar = %g Pa (no equilibrium "
+                        "in contact: beyond the pull-off load)",
+                        value));
         std::swap(gradient, previous_gradient);
         previous_product = product;
       }
 
     ContactSolution solution;
-    solution.mean_pressure    = mu;
-    solution.mean_gap         = mean(gap);
-    solution.iterations       = iteration;
-    solution.residual         = residual;
+    solution.mean_pressure = mu;
+    solution.mean_gap      = mean(gap);
+    solution.iterations    = iteration;
+    solution.residual      = residual;
     solution.pressure.resize(n);
-    double elastic = 0, interaction = 0;
+    double      elastic = 0, interaction = 0;
     std::size_t contact = 0;
     for (std::size_t i = 0; i < n; ++i)
       {
@@ -379,7 +394,8 @@ namespace penny
                                    const ContactSolverControl &control)
   {
     if (contact.adhesion().active())
-      throw std::invalid_argument("load_sweep: with adhesion the equilibrium depends on the path (ContactPath)");
+      throw std::invalid_argument(
+          "load_sweep: with adhesion the equilibrium depends on the path (ContactPath)");
     std::vector<std::size_t> order(mean_pressures.size());
     std::iota(order.begin(), order.end(), 0);
     std::sort(order.begin(), order.end(),

@@ -34,12 +34,13 @@ namespace penny
 
   struct ContactSolution
   {
-    GridField pressure;         // p (Pa): the wall's reaction plus the attraction -phi'(g) where g = 0, -phi'(g) in the gaps
-    GridField gap;              // g >= 0 (m), zero exactly on the contact points
-    double    mean_pressure;    // p_bar (Pa): prescribed, or the result at a prescribed mean gap
-    double    mean_gap;         // <g> (m)
-    double    contact_fraction; // share of grid points with g = 0
-    double    energy;           // Pi (J/m^2)
+    GridField pressure; // p (Pa): the wall's reaction plus the attraction -phi'(g) where g = 0, -phi'(g) in
+                        // the gaps
+    GridField    gap;   // g >= 0 (m), zero exactly on the contact points
+    double       mean_pressure;    // p_bar (Pa): prescribed, or the result at a prescribed mean gap
+    double       mean_gap;         // <g> (m)
+    double       contact_fraction; // share of grid points with g = 0
+    double       energy;           // Pi (J/m^2)
     unsigned int iterations;
     // The displacement that the unbalanced traction of the gap points would
     // cause there, rms over the grid in units of the rms height (doc/contact-notes.md).
@@ -95,7 +96,7 @@ namespace penny
     GridField                  full_contact; // p_fc (Pa)
     FourierTransform::Spectrum stiffness;    // (E*/2) |q|, zero at q = 0
     FourierTransform::Spectrum compliance;   // its inverse, 2/(E* q_min) at q = 0
-    double point_compliance;                 // the diagonal of C: the displacement of a point under its own unit load
+    double point_compliance; // the diagonal of C: the displacement of a point under its own unit load
   };
 
   // One load of a sweep: the non-contact share of the grid points and the

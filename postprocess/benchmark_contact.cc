@@ -1,0 +1,166 @@
+// Speed of the boundary-element contact solver near full contact, against the
+// grid: the random surface of the random-contact scene (H = 0.75, zeta = 32,
+// lambda0 = 1 mm, h0/lambda0 = 0.01, one period lambda0, seed 1; E = 10 MPa,
+// nu = 0.49), tolerance 1e-8.
+//
+// For each N: the adhesionless solve at p_bar = 2 sqrt(V) from full contact
+// (iterations, convolutions, wall time; the time per iteration against the
+// time of one convolution, i.e. one r2c and one c2r FFT; and the
+// residual of the old definition, the gap that the reported pressure makes,
+// evaluated independently), the six loads p_bar/sqrt(V) = 3, 2.5, ..., 0.5 as
+// the random-contact scene runs them (load_sweep), and the adhesive solve at
+// 2 sqrt(V) from the adhesionless one (w, rho with a cohesive zone of
+// lambda0/64, 4 grid spacings at N = 256, and a strength w/rho = sqrt(V)/2).
+//
+// Usage: benchmark_contact [measure] [N ...]   (default N: 256 512 1024 2048 4096;
+// "measure": FFTW_MEASURE plans instead of FFTW_ESTIMATE)
+#include "contact/half_space_contact.h"
+#include "statistics/random_field.h"
+#include "statistics/roughness.h"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <exception>
+#include <fstream>
+#include <string>
+#include <vector>
+
+using namespace penny;
+
+namespace
+{
+  using Clock = std::chrono::steady_clock;
+
+  double seconds_since(const Clock::time_point start)
+  {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+  }
+
+  std::string load_average()
+  {
+    std::ifstream file("/proc/loadavg");
+    std::string   one, five, fifteen;
+    file >> one >> five >> fifteen;
+    return one + " " + five + " " + fifteen;
+  }
+
+  // Polonsky and Keer's residual of a solution: the rms gap C p - h + const
+  // on the contact points and overlap elsewhere, in units of the rms height.
+  double gap_residual(const FourierTransform &transform, const GridField &h, const ContactSolution &solution,
+                      const double E_star)
+  {
+    const auto compliance = transform.tabulate([=](const Wavevector &q) {
+      return std::complex<double>(q.kx == 0 && q.ky == 0 ? 0. : 2 / (E_star * q.norm()));
+    });
+    GridField  implied;
+    transform.apply(compliance, solution.pressure, implied);
+    const std::size_t n     = h.size();
+    double            shift = 0, contact = 0, h_mean = 0, h_square = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        if (solution.gap[i] == 0)
+          {
+            shift += implied[i] - h[i];
+            ++contact;
+          }
+        h_mean += h[i] / n;
+        h_square += h[i] * h[i] / n;
+      }
+    double square = 0;
+    for (std::size_t i = 0; i < n; ++i)
+      {
+        const double g = implied[i] - h[i] - shift / contact;
+        square += solution.gap[i] == 0 ? g * g : std::pow(std::min(g, 0.), 2);
+      }
+    return std::sqrt(square / n) / std::sqrt(h_square - h_mean * h_mean);
+  }
+} // namespace
+
+int main(int argc, char **argv)
+{
+  try
+    {
+      Planning                  planning = Planning::estimate;
+      std::vector<unsigned int> sizes;
+      for (int k = 1; k < argc; ++k)
+        if (std::strcmp(argv[k], "measure") == 0)
+          planning = Planning::measure;
+        else
+          sizes.push_back(std::stoul(argv[k]));
+      if (sizes.empty())
+        sizes = {256, 512, 1024, 2048, 4096};
+
+      const double               lambda0 = 1e-3, E_star = 1e7 / (1 - 0.49 * 0.49);
+      const PowerSpectrum        spectrum = power_law_spectrum(0.75, 2 * M_PI / lambda0, 32, 0.01 * lambda0);
+      const ContactSolverControl control{5000, 1e-8};
+      std::printf("# FFTW planning: %s; load average at the start %s\n",
+                  planning == Planning::measure ? "measure" : "estimate", load_average().c_str());
+      std::printf("# %5s | %5s %5s %8s %9s %9s %8s %9s | %5s %8s | %5s %8s %7s | %s\n", "N", "iter", "conv",
+                  "time(s)", "s/iter", "s/conv", "iter/c", "old res", "iter6", "time6(s)", "iterA",
+                  "timeA(s)", "A_nc", "load average");
+      for (const unsigned int n : sizes)
+        {
+          const PeriodicGrid     grid = square_grid(n, lambda0);
+          const FourierTransform transform(grid, planning);
+          const GridField        h = gaussian_field(transform, spectrum, realisation_seed(1, 0));
+          const double           sqrt_V =
+              std::sqrt(lattice_moments(grid, pressure_spectrum(spectrum, E_star)).expected.m0);
+          const HalfSpaceContact contact(transform, h, E_star);
+
+          // One convolution on its own, for the cost of an iteration in FFTs.
+          std::copy(h.begin(), h.end(), transform.work_array());
+          const auto   fft_start = Clock::now();
+          const auto   probe = transform.tabulate([](const Wavevector &) { return std::complex<double>(1); });
+          unsigned int repeats = 0;
+          while (repeats < 3 || seconds_since(fft_start) < 1)
+            {
+              transform.convolve_work_array(probe);
+              ++repeats;
+            }
+          const double convolution_time = seconds_since(fft_start) / repeats;
+
+          const std::size_t     before = transform.convolutions();
+          const auto            start  = Clock::now();
+          const ContactSolution single = contact.solve(2 * sqrt_V, control);
+          const double          time   = seconds_since(start);
+          const double          convs  = transform.convolutions() - before;
+
+          std::vector<double> loads;
+          for (const double ratio : {0.5, 1.0, 1.5, 2.0, 2.5, 3.0})
+            loads.push_back(ratio * sqrt_V);
+          const auto   sweep_start      = Clock::now();
+          const auto   steps            = load_sweep(contact, loads, control);
+          const double sweep_time       = seconds_since(sweep_start);
+          unsigned int sweep_iterations = 0;
+          for (const LoadStep &step : steps)
+            sweep_iterations += step.iterations;
+
+          const double           zone = lambda0 / 64, strength = sqrt_V / 2;
+          const double           w = M_PI * strength * strength * zone / E_star;
+          const HalfSpaceContact sticky(transform, h, E_star, {w, w / strength});
+          const auto             adhesive_start = Clock::now();
+          const ContactSolution  adhesive       = sticky.solve(2 * sqrt_V, control, single.gap);
+          const double           adhesive_time  = seconds_since(adhesive_start);
+
+          std::printf("  %5u | %5u %5.0f %8.2f %9.4f %9.4f %8.2f %9.1e | %5u %8.2f | %5u %8.2f %7.4f | %s\n",
+                      n, single.iterations, convs, time, time / single.iterations, convolution_time,
+                      time / single.iterations / convolution_time, gap_residual(transform, h, single, E_star),
+                      sweep_iterations, sweep_time, adhesive.iterations, adhesive_time,
+                      1 - adhesive.contact_fraction, load_average().c_str());
+          std::fflush(stdout);
+        }
+      std::printf(
+          "# iter, conv, time: adhesionless at 2 sqrt(V) from full contact; s/conv: one r2c + c2r pair;\n"
+          "# iter/c: the time of an iteration in convolutions; old res: the gap residual of Polonsky and "
+          "Keer's definition;\n# iter6, time6: the six loads 3 ... 0.5 sqrt(V) (load_sweep); iterA, timeA, "
+          "A_nc: adhesive at 2 sqrt(V) from the adhesionless state\n");
+    }
+  catch (const std::exception &error)
+    {
+      std::fprintf(stderr, "%s\n", error.what());
+      return 1;
+    }
+}
