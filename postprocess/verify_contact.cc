@@ -129,18 +129,18 @@ namespace
 
   // The JKR sphere's pull-off under prescribed load, -(3/2) pi w R: the
   // least load along a path of prescribed mean gap. l_pz/a_pull-off halving
-  // from 0.2 with the grid tied to it (6.4 points per zone) in a period of
-  // 8 a_pull-off, extrapolated in l_pz; as the grid error at a fixed number of
-  // points per zone scales with the zone, that also removes it (the table shows
-  // 12.8 points beside). The periodic images shift the load by ~(a/L)^3: the
-  // shift from L = 8 to an infinite period, extrapolated from L = 8, 12 and 16 at
-  // the coarsest zone, is added.
+  // from 0.1 with the grid tied to it (4 points per zone) in a period of
+  // 6 a_pull-off, extrapolated in l_pz; as the grid error at a fixed number of
+  // points per zone scales with the zone, that also removes it (8 points per
+  // zone at the two coarsest zones show its size). The periodic images shift
+  // the load by ~(a/L)^3: the shift from L = 6 to an infinite period,
+  // extrapolated from L = 6, 9 and 12 at the coarsest zone, is added.
   void sphere(const bool quick)
   {
-    std::vector<double> zones = {0.2, 0.1, 0.05, 0.025};
+    std::vector<double> zones = {0.1, 0.05, 0.025, 0.0125, 0.00625};
     if (quick)
       zones = {0.4, 0.2, 0.1};
-    const double               period = 8, points_per_zone = 6.4;
+    const double               period = 6, points_per_zone = 4;
     const ContactSolverControl control{100000, 1e-9};
     const auto                 pull_off = [&](const double zone, const double L, const double points) {
       const unsigned int           n = static_cast<unsigned int>(std::lround(L * points / zone));
@@ -152,31 +152,33 @@ namespace
       return state.load;
     };
     std::printf("# The JKR sphere: pull-off load F/(pi w R) (JKR: -1.5) under prescribed load\n");
+    const double        unit = M_PI * adhesive_sphere::work_of_adhesion; // pi w R
     std::vector<double> loads, finer;
     for (const double zone : zones)
       loads.push_back(pull_off(zone, period, points_per_zone));
     for (std::size_t k = 0; k < 2; ++k)
       finer.push_back(pull_off(zones[k], period, 2 * points_per_zone));
-    // Images: (a/L)^3 and (a/L)^4 through L = 8, 12, 16.
-    const std::vector<double> periods   = {period, 1.5 * period, 2 * period};
-    std::vector<double>       by_period = {loads[0]}, inverse_periods = {1 / period};
-    for (std::size_t k = 1; k < periods.size(); ++k)
+    // Images: (a/L)^3 and (a/L)^4 through L = 6, 9, 12.
+    std::vector<double> by_period = {loads[0]}, inverse_periods = {1 / period};
+    for (const double L : {1.5 * period, 2 * period})
       {
-        by_period.push_back(pull_off(zones[0], periods[k], points_per_zone));
-        inverse_periods.push_back(1 / periods[k]);
+        by_period.push_back(pull_off(zones[0], L, points_per_zone));
+        inverse_periods.push_back(1 / L);
       }
     const Extrapolated infinite_period = extrapolate(inverse_periods, by_period, {3, 4});
     const Extrapolated in_zone =
         extrapolate(zones, loads, quick ? std::vector<double>{0.5, 1} : std::vector<double>{0.5, 1, 1.5});
     const double shift = infinite_period.value - loads[0];
     const double value = in_zone.value + shift, error = in_zone.error + infinite_period.error;
-    const double unit = M_PI * adhesive_sphere::work_of_adhesion; // pi w R
-    std::printf("%10s %14s %14s\n", "l_pz/a_po", "F/(pi w R)", "12.8 points");
+    std::printf("%10s %14s %14s %8s\n", "l_pz/a_po", "F/(pi w R)", "8 points", "order");
     for (std::size_t k = 0; k < zones.size(); ++k)
-      std::printf("%10g %14.7f %14s\n", zones[k], loads[k] / unit,
-                  k < finer.size() ? std::to_string(finer[k] / unit).c_str() : "");
-    std::printf("# observed order in l_pz (three finest) %s\n", order_text(loads, 2).c_str());
-    std::printf("# period L/a_po = 8, 12, 16 at l_pz %g: %.7f %.7f %.7f -> infinite %.7f +- %.1e\n", zones[0],
+      {
+        const std::vector<double> upto(loads.begin(), loads.begin() + k + 1);
+        std::printf("%10g %14.7f %14s %8s\n", zones[k], loads[k] / unit,
+                    k < finer.size() ? std::to_string(finer[k] / unit).c_str() : "",
+                    order_text(upto, 2).c_str());
+      }
+    std::printf("# period L/a_po = 6, 9, 12 at l_pz %g: %.7f %.7f %.7f -> infinite %.7f +- %.1e\n", zones[0],
                 by_period[0] / unit, by_period[1] / unit, by_period[2] / unit, infinite_period.value / unit,
                 infinite_period.error / unit);
     std::printf(
@@ -188,7 +190,7 @@ namespace
                 zones.back(), "a/a_po", "F/(pi w R)", "JKR F(a)", "rel. diff");
     const unsigned int n = static_cast<unsigned int>(std::lround(period * points_per_zone / zones.back()));
     for (const adhesive_sphere::State &state :
-         adhesive_sphere::Model({zones.back(), period, n}).unloading(control, 8, 0.1))
+         adhesive_sphere::Model({zones.back(), period, n}).unloading(control, 6, 0.1))
       std::printf("%10.5f %12.6f %12.6f %10.2e\n", state.contact_radius, state.load / unit,
                   adhesive_sphere::jkr_load(state.contact_radius) / unit,
                   std::abs(state.load / adhesive_sphere::jkr_load(state.contact_radius) - 1));

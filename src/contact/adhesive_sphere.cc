@@ -44,12 +44,13 @@ namespace penny::adhesive_sphere
     return {a, solution.mean_pressure * area, solution.mean_gap};
   }
 
-  // Hertz's contact of JKR's zero-load radius 2^(2/3) (load 4 a^3/3 = 16/3),
-  // then adhesion switched on at its mean gap.
+  // Hertz's contact of radius 1.2 (load 4 a^3/3), then adhesion switched
+  // on at its mean gap: the contact grows, near JKR's at zero load.
   ContactSolution Model::start(const ContactSolverControl &control) const
   {
     const HalfSpaceContact plain(*transform, contact->heights(), 1.);
-    const ContactSolution  hertz = plain.solve(16. / 3 / std::pow(discretisation.period, 2), control);
+    const ContactSolution  hertz =
+        plain.solve(4 * std::pow(1.2, 3) / 3 / std::pow(discretisation.period, 2), control);
     return contact->solve_at_mean_gap(hertz.mean_gap, control, hertz.gap);
   }
 
@@ -71,8 +72,8 @@ namespace penny::adhesive_sphere
   State Model::pull_off(const ContactSolverControl &control) const
   {
     const ContactSolution from = start(control);
-    // Steps of about a twentieth of the approach between zero load and pull-off.
-    const double factor = 1 + 0.05 / from.mean_gap;
+    // Steps of 0.04 in the approach (about 1.2 from zero load to pull-off).
+    const double factor = 1 + 0.04 / from.mean_gap;
     return state(load_extremum(*contact, control, from, factor, false));
   }
 } // namespace penny::adhesive_sphere

@@ -48,9 +48,9 @@ namespace penny::adhesive_sphere
   public:
     explicit Model(const Discretisation &discretisation);
 
-    // States along an unloading path at prescribed mean gap from JKR's
-    // zero-load contact (a = 2^(2/3)), `steps` steps each raising the mean gap
-    // by `increment` (in units of R... the model's length unit a_pull-off).
+    // States along an unloading path at prescribed mean gap from Hertz's
+    // contact of radius 1.2 with adhesion switched on, `steps` steps each
+    // raising the mean gap by `increment`.
     std::vector<State> unloading(const ContactSolverControl &control, unsigned int steps,
                                  double increment) const;
 

@@ -122,7 +122,7 @@ namespace penny
               formatted("contact solver: the adhesive range rho = %g m is outside the allowed range (0, inf)",
                         adhesion.range));
         const double zone = adhesion.process_zone(E_star), spacing = grid_spacing(transform.grid());
-        if (!(zone >= min_process_zone_points * spacing))
+        if (!(zone / spacing >= min_process_zone_points * (1 - 1e-9)))
           throw std::invalid_argument(formatted("contact solver: the cohesive zone E* rho^2/(pi w) = %.3g m "
                                                 "spans %.3g grid spacings; at least %g "
                                                 "are needed (a finer grid or a longer range)",
