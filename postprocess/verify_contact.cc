@@ -12,6 +12,7 @@
 #include "contact/adhesive_sphere.h"
 #include "contact/extrapolation.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -255,6 +256,38 @@ namespace
                     margins[1], margins.size() > 2 ? std::to_string(margins[2]).c_str() : "", limit.value,
                     limit.error, limit.value / isolated, order_text(margins, 2).c_str());
         std::fflush(stdout);
+      }
+
+    // The gap against the penny gap of its summit, c from
+    // P = c^2/(3 R_p) + sqrt(pi) K_Ic/(2 sqrt(c)) at P = p* - p_bar, along a
+    // loading path to near closure, at each zone and extrapolated (order 1).
+    const double                     alpha = 0.03, c_min = 0.19519 * std::pow(alpha, 0.4);
+    const double                     isolated  = adhesive_bisinusoid::isolated_closure_margin(alpha);
+    const std::vector<double>        multiples = {4, 3, 2, 1.5, 1.25};
+    std::vector<double>              zones;
+    std::vector<std::vector<double>> radii(multiples.size());
+    for (const double fraction : fractions)
+      {
+        const double        zone = fraction * c_min;
+        const unsigned int  n    = 32 * static_cast<unsigned int>(std::ceil(6 / zone / std::sqrt(2.) / 32));
+        std::vector<double> loads;
+        for (const double multiple : multiples)
+          loads.push_back(1 - multiple * isolated);
+        const auto states = adhesive_bisinusoid::Model({alpha, zone, n}).loading(loads, control);
+        zones.push_back(zone);
+        for (std::size_t k = 0; k < multiples.size(); ++k)
+          radii[k].push_back(states[k].gap_radius ? *states[k].gap_radius : -1); // -1: closed
+      }
+    std::printf("# The gap's equivalent radius sqrt(area/pi) (where g > rho) against the isolated penny gap, "
+                "alpha = %g\n%10s %10s | %10s %10s %10s | %10s %9s %9s\n",
+                alpha, "P/p0", "c penny", "l0", "l0/2", "l0/4", "extrap.", "error", "ratio");
+    for (std::size_t k = 0; k < multiples.size(); ++k)
+      {
+        const double       penny = *adhesive_bisinusoid::isolated_gap_radius(multiples[k] * isolated, alpha);
+        const Extrapolated limit = extrapolate(zones, radii[k], {1});
+        std::printf("%10g %10.6f | %10.6f %10.6f %10s | %10.6f %9.1e %9.4f\n", multiples[k], penny,
+                    radii[k][0], radii[k][1], radii[k].size() > 2 ? std::to_string(radii[k][2]).c_str() : "",
+                    limit.value, limit.error, limit.value / penny);
       }
   }
 } // namespace

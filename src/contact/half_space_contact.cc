@@ -42,11 +42,11 @@ namespace penny
     // clipping at the wall: the elastic part is alpha r.d + alpha^2 d.Kd/2, the
     // interaction continues beyond the wall with the slope it has there, so
     //   E'(alpha) = r.d + alpha d.Kd + sum_i [phi'(max(g_i + alpha d_i, 0)) - phi'(g_i)] d_i
-    // is continuous. (Dropping the attraction at the wall instead puts a
-    // spurious minimum where a point with a tiny gap reaches it.) Without adhesion alpha = -r.d/d.Kd;
-    // with it the minimum is bracketed by doubling and found by safeguarded
-    // Newton. No bracket within 2^60 times the elastic step: nothing holds
-    // the surfaces together along d.
+    // is continuous (dropping the attraction at the wall instead puts a
+    // spurious minimum where a point with a tiny gap reaches it). Without
+    // adhesion alpha = -r.d/d.Kd; with it the minimum is bracketed by doubling
+    // and found by safeguarded Newton. No bracket within 2^60 times the
+    // elastic step: nothing holds the surfaces together along d.
     double step_length(const Adhesion &adhesion, const double slope_along, const double curvature,
                        const GridField &gap, const GridField &direction, const GridField &slope)
     {
@@ -190,11 +190,10 @@ namespace penny
   //   g = max(g + alpha d, 0),                     alpha the first minimum of Pi along d
   //
   // Preconditioned by the compliance, the stiffness on the free set has a
-  // condition number that grows only like the logarithm of the points per
-  // gap, so the iterations hardly grow with the grid. At a prescribed mean gap,
-  // mu is the unknown p_bar, corrected each step so that z (and d) keep the
-  // mean of g. A free point at the wall whose preconditioned step would close
-  // it further is held in contact for that step.
+  // condition number that grows only like the square of the logarithm of the
+  // points per gap, so the iterations hardly grow with the grid. At a
+  // prescribed mean gap, mu is the unknown p_bar, corrected each step so that
+  // z (and d) keep the mean of g.
   ContactSolution HalfSpaceContact::minimise(const Control control, const double value,
                                              const ContactSolverControl &solver, GridField gap) const
   {
