@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <limits>
 #include <numeric>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -99,6 +100,36 @@ namespace penny
         }
       return alpha;
     }
+
+    // The grid halved in each direction of more than one point, or nothing if
+    // a side would fall below 128 points or is odd.
+    std::optional<PeriodicGrid> halved(const PeriodicGrid &grid)
+    {
+      const auto halvable = [](const unsigned int n) { return n == 1 || (n % 2 == 0 && n >= 256); };
+      if (!halvable(grid.nx) || !halvable(grid.ny) || (grid.nx == 1 && grid.ny == 1))
+        return std::nullopt;
+      return PeriodicGrid{grid.nx == 1 ? 1 : grid.nx / 2, grid.ny == 1 ? 1 : grid.ny / 2, grid.lx, grid.ly};
+    }
+
+    // A gap on `fine` (twice `coarse` in each direction of more than one
+    // point) by bilinear interpolation, periodic: it stays >= 0.
+    GridField interpolated(const PeriodicGrid &coarse, const GridField &gap, const PeriodicGrid &fine)
+    {
+      const unsigned int sx = fine.nx / coarse.nx, sy = fine.ny / coarse.ny;
+      GridField          result(fine.n_points());
+      for (unsigned int i = 0; i < fine.nx; ++i)
+        for (unsigned int j = 0; j < fine.ny; ++j)
+          {
+            const unsigned int a = i / sx, b = j / sy, a1 = (a + 1) % coarse.nx, b1 = (b + 1) % coarse.ny;
+            const double       tx = double(i % sx) / sx, ty = double(j % sy) / sy;
+            const auto         at = [&](const unsigned int x, const unsigned int y) {
+              return gap[x * coarse.ny + y];
+            };
+            result[i * fine.ny + j] = (1 - tx) * ((1 - ty) * at(a, b) + ty * at(a, b1)) +
+                                      tx * ((1 - ty) * at(a1, b) + ty * at(a1, b1));
+          }
+      return result;
+    }
   } // namespace
 
   HalfSpaceContact::HalfSpaceContact(const FourierTransform &transform, GridField heights,
@@ -161,8 +192,23 @@ namespace penny
           formatted("contact solver: the mean pressure %g Pa is outside the allowed range "
                     "(0, inf) without adhesion, (-inf, inf) with it",
                     mean_pressure));
-    GridField gap = initial_gap.empty() ? GridField(heights_.size(), 0.) : initial_gap;
-    return minimise(Control::mean_pressure, mean_pressure, control, std::move(gap));
+    const std::optional<PeriodicGrid> coarse_grid = halved(transform_.grid());
+    if (!initial_gap.empty() || adhesion_.active() || !coarse_grid)
+      {
+        GridField gap = initial_gap.empty() ? GridField(heights_.size(), 0.) : initial_gap;
+        return minimise(Control::mean_pressure, mean_pressure, control, std::move(gap));
+      }
+    const FourierTransform coarse_transform(*coarse_grid);
+    const HalfSpaceContact coarse(coarse_transform, resampled(transform_, coarse_transform, heights_),
+                                  E_star);
+    // Only a start: its accuracy beyond the interpolation's is wasted.
+    const ContactSolution start =
+        coarse.solve(mean_pressure, {control.max_iterations, std::max(control.tolerance, 1e-4)});
+    ContactSolution solution = minimise(Control::mean_pressure, mean_pressure, control,
+                                        interpolated(*coarse_grid, start.gap, transform_.grid()));
+    solution.coarse_iterations =
+        (start.iterations + start.coarse_iterations) * coarse_grid->n_points() / transform_.grid().n_points();
+    return solution;
   }
 
   ContactSolution HalfSpaceContact::solve_at_mean_gap(const double                mean_gap,
@@ -368,10 +414,11 @@ namespace penny
       }
 
     ContactSolution solution;
-    solution.mean_pressure = mu;
-    solution.mean_gap      = mean(gap);
-    solution.iterations    = iteration;
-    solution.residual      = residual;
+    solution.coarse_iterations = 0;
+    solution.mean_pressure     = mu;
+    solution.mean_gap          = mean(gap);
+    solution.iterations        = iteration;
+    solution.residual          = residual;
     solution.pressure.resize(n);
     double      elastic = 0, interaction = 0;
     std::size_t contact = 0;

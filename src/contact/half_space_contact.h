@@ -34,14 +34,19 @@ namespace penny
 
   struct ContactSolution
   {
-    GridField pressure; // p (Pa): the wall's reaction plus the attraction -phi'(g) where g = 0, -phi'(g) in
-                        // the gaps
-    GridField    gap;   // g >= 0 (m), zero exactly on the contact points
+    // p (Pa): on the contact points the wall's reaction plus the attraction
+    // -phi'(0), in the gaps the attraction -phi'(g).
+    GridField pressure;
+    // g >= 0 (m), zero exactly on the contact points.
+    GridField    gap;
     double       mean_pressure;    // p_bar (Pa): prescribed, or the result at a prescribed mean gap
     double       mean_gap;         // <g> (m)
     double       contact_fraction; // share of grid points with g = 0
-    double       energy;           // Pi (J/m^2)
+    double       energy;           // (1/2) <(g + h) K (g + h)> + <phi(g)> (J/m^2); add p_bar <g> for Pi
     unsigned int iterations;
+    // Iterations of a cold start's solves on coarser grids (solve() without
+    // adhesion), weighted by their grid points relative to this grid's.
+    double coarse_iterations;
     // The displacement that the unbalanced traction of the gap points would
     // cause there, rms over the grid in units of the rms height (doc/contact-notes.md).
     double residual;
@@ -61,9 +66,15 @@ namespace penny
     // Equilibrium at mean pressure p_bar (compressive positive; without
     // adhesion p_bar > 0), reached by descent from `initial_gap` (>= 0) or,
     // if empty, from full contact g = 0 (the solution whenever no gap opens;
-    // with adhesion also the full-contact branch). Throws std::runtime_error
-    // (one line) if the residual does not fall below the tolerance within
-    // max_iterations, or if the surfaces separate (p_bar beyond the pull-off load).
+    // with adhesion also the full-contact branch). Without adhesion such a
+    // cold start first solves the problem on the grid halved in each
+    // direction (heights resampled, recursively while the halved grid keeps
+    // 128 points a side; to a tolerance of at least 1e-4) and starts from that
+    // gap interpolated: nested iteration, after which the iterations on the
+    // fine grid hardly depend on it. Throws
+    // std::runtime_error (one line) if the residual does not fall below the
+    // tolerance within max_iterations, or if the surfaces separate (p_bar
+    // beyond the pull-off load).
     ContactSolution solve(double mean_pressure, const ContactSolverControl &control,
                           const GridField &initial_gap = {}) const;
 

@@ -113,6 +113,22 @@ namespace penny
     return sum * scale * scale;
   }
 
+  GridField resampled(const FourierTransform &from, const FourierTransform &to, const GridField &field)
+  {
+    const PeriodicGrid &a = from.grid(), &b = to.grid();
+    if (a.lx != b.lx || a.ly != b.ly)
+      throw std::invalid_argument("resampled: the grids must cover the same rectangle");
+    const FourierTransform::Spectrum in = from.forward(field);
+    FourierTransform::Spectrum       out(to.n_coefficients(), 0.);
+    // Integer wavenumbers |kx| < kx_limit, 0 <= ky < ky_limit on both grids.
+    const int          kx_limit = (std::min(a.nx, b.nx) + 1) / 2, ky_limit = (std::min(a.ny, b.ny) + 1) / 2;
+    const unsigned int a_ny = a.ny / 2 + 1, b_ny = b.ny / 2 + 1;
+    for (int kx = 1 - kx_limit; kx < kx_limit; ++kx)
+      for (int ky = 0; ky < ky_limit; ++ky)
+        out[((kx + b.nx) % b.nx) * b_ny + ky] = in[((kx + a.nx) % a.nx) * a_ny + ky];
+    return to.inverse(out);
+  }
+
   std::complex<double> derivative_factor(const Wavevector &q, const unsigned int order_x,
                                          const unsigned int order_y)
   {

@@ -109,6 +109,11 @@ namespace penny
     mutable std::size_t   n_convolutions = 0;
   };
 
+  // The field sampled on another grid of the same rectangle by its Fourier
+  // series, the modes the coarser of the two grids cannot hold (their Nyquist
+  // modes too) dropped: exact for fields band-limited to the coarser grid.
+  GridField resampled(const FourierTransform &from, const FourierTransform &to, const GridField &field);
+
   // The Fourier factor of d^(ox + oy)/dx^ox dy^oy, (i qx)^ox (i qy)^oy, zero
   // on a Nyquist component of odd order (its sine part is not on the grid).
   std::complex<double> derivative_factor(const Wavevector &q, unsigned int order_x, unsigned int order_y);
