@@ -3,14 +3,17 @@
 // lambda0 = 1 mm, h0/lambda0 = 0.01, one period lambda0, seed 1; E = 10 MPa,
 // nu = 0.49), tolerance 1e-8.
 //
-// For each N: the adhesionless solve at p_bar = 2 sqrt(V) from full contact
-// (iterations, convolutions, wall time; the time per iteration against the
-// time of one convolution, i.e. one r2c and one c2r FFT; and the
-// residual of the old definition, the gap that the reported pressure makes,
-// evaluated independently), the six loads p_bar/sqrt(V) = 3, 2.5, ..., 0.5 as
-// the random-contact scene runs them (load_sweep), and the adhesive solve at
-// 2 sqrt(V) from the adhesionless one (w, rho with a cohesive zone of
-// lambda0/64, 4 grid spacings at N = 256, and a strength w/rho = sqrt(V)/2).
+// For each N, adhesionless at p_bar = 2 sqrt(V): the solve from full contact
+// (iterations, wall time, the time per iteration against the time of one
+// convolution, i.e. one r2c and one c2r FFT, and the residual of the old
+// definition, the gap that the reported pressure makes, evaluated
+// independently) and the cold start, which first solves on the halved grids
+// (iterations on this grid + on the coarser ones in this grid's units, wall
+// time); then the six loads p_bar/sqrt(V) = 3, 2.5, ..., 0.5 as the
+// random-contact scene runs them (load_sweep: the first cold, each next from
+// the last); and the adhesive solve at 2 sqrt(V) from the adhesionless one
+// (w, rho with a cohesive zone of lambda0/64, 4 grid spacings at N = 256, and
+// a strength w/rho = sqrt(V)/2).
 //
 // Usage: benchmark_contact [measure] [N ...]   (default N: 256 512 1024 2048 4096;
 // "measure": FFTW_MEASURE plans instead of FFTW_ESTIMATE)
@@ -98,9 +101,9 @@ int main(int argc, char **argv)
       const ContactSolverControl control{5000, 1e-8};
       std::printf("# FFTW planning: %s; load average at the start %s\n",
                   planning == Planning::measure ? "measure" : "estimate", load_average().c_str());
-      std::printf("# %5s | %5s %5s %8s %9s %9s %8s %9s | %5s %8s | %5s %8s %7s | %s\n", "N", "iter", "conv",
-                  "time(s)", "s/iter", "s/conv", "iter/c", "old res", "iter6", "time6(s)", "iterA",
-                  "timeA(s)", "A_nc", "load average");
+      std::printf("# %5s | %5s %8s %9s %9s %7s %9s | %11s %8s | %5s %8s | %5s %8s %7s | %s\n", "N", "iter",
+                  "time(s)", "s/iter", "s/conv", "iter/c", "old res", "cold iter", "time(s)", "iter6",
+                  "time6(s)", "iterA", "timeA(s)", "A_nc", "load average");
       for (const unsigned int n : sizes)
         {
           const PeriodicGrid     grid = square_grid(n, lambda0);
@@ -122,11 +125,12 @@ int main(int argc, char **argv)
             }
           const double convolution_time = seconds_since(fft_start) / repeats;
 
-          const std::size_t     before = transform.convolutions();
           const auto            start  = Clock::now();
-          const ContactSolution single = contact.solve(2 * sqrt_V, control);
+          const ContactSolution single = contact.solve(2 * sqrt_V, control, GridField(grid.n_points(), 0.));
           const double          time   = seconds_since(start);
-          const double          convs  = transform.convolutions() - before;
+          const auto            cold_start = Clock::now();
+          const ContactSolution cold       = contact.solve(2 * sqrt_V, control);
+          const double          cold_time  = seconds_since(cold_start);
 
           std::vector<double> loads;
           for (const double ratio : {0.5, 1.0, 1.5, 2.0, 2.5, 3.0})
@@ -145,18 +149,21 @@ int main(int argc, char **argv)
           const ContactSolution  adhesive       = sticky.solve(2 * sqrt_V, control, single.gap);
           const double           adhesive_time  = seconds_since(adhesive_start);
 
-          std::printf("  %5u | %5u %5.0f %8.2f %9.4f %9.4f %8.2f %9.1e | %5u %8.2f | %5u %8.2f %7.4f | %s\n",
-                      n, single.iterations, convs, time, time / single.iterations, convolution_time,
-                      time / single.iterations / convolution_time, gap_residual(transform, h, single, E_star),
-                      sweep_iterations, sweep_time, adhesive.iterations, adhesive_time,
-                      1 - adhesive.contact_fraction, load_average().c_str());
+          std::printf(
+              "  %5u | %5u %8.2f %9.4f %9.4f %7.2f %9.1e | %4u + %4.1f %8.2f | %5u %8.2f | %5u %8.2f %7.4f | "
+              "%s\n",
+              n, single.iterations, time, time / single.iterations, convolution_time,
+              time / single.iterations / convolution_time, gap_residual(transform, h, single, E_star),
+              cold.iterations, cold.coarse_iterations, cold_time, sweep_iterations, sweep_time,
+              adhesive.iterations, adhesive_time, 1 - adhesive.contact_fraction, load_average().c_str());
           std::fflush(stdout);
         }
       std::printf(
-          "# iter, conv, time: adhesionless at 2 sqrt(V) from full contact; s/conv: one r2c + c2r pair;\n"
-          "# iter/c: the time of an iteration in convolutions; old res: the gap residual of Polonsky and "
-          "Keer's definition;\n# iter6, time6: the six loads 3 ... 0.5 sqrt(V) (load_sweep); iterA, timeA, "
-          "A_nc: adhesive at 2 sqrt(V) from the adhesionless state\n");
+          "# iter, time: adhesionless at 2 sqrt(V) from full contact; s/conv: one r2c + c2r pair;\n"
+          "# iter/c: the time of an iteration in convolutions (an iteration does 2.5); old res: the gap "
+          "residual of Polonsky and Keer's definition;\n# cold iter: the cold start's iterations on N^2 + "
+          "on the halved grids in units of N^2 iterations; iter6, time6: the six loads 3 ... 0.5 sqrt(V) "
+          "(load_sweep);\n# iterA, timeA, A_nc: adhesive at 2 sqrt(V) from the adhesionless state\n");
     }
   catch (const std::exception &error)
     {
