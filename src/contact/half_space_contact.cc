@@ -442,18 +442,11 @@ namespace penny
     if (contact.adhesion().active())
       throw std::invalid_argument(
           "load_sweep: with adhesion the equilibrium depends on the path (ContactPath)");
-    std::vector<std::size_t> order(mean_pressures.size());
-    std::iota(order.begin(), order.end(), 0);
-    std::sort(order.begin(), order.end(),
-              [&](std::size_t a, std::size_t b) { return mean_pressures[a] > mean_pressures[b]; });
-
-    std::vector<LoadStep> steps(mean_pressures.size());
-    GridField             gap;
-    for (const std::size_t k : order)
+    std::vector<LoadStep> steps;
+    for (const double p_bar : mean_pressures)
       {
-        ContactSolution solution = contact.solve(mean_pressures[k], control, gap);
-        steps[k] = {mean_pressures[k], 1 - solution.contact_fraction, solution.iterations, solution.residual};
-        gap      = std::move(solution.gap);
+        const ContactSolution solution = contact.solve(p_bar, control);
+        steps.push_back({p_bar, 1 - solution.contact_fraction, solution.iterations, solution.residual});
       }
     return steps;
   }

@@ -120,8 +120,10 @@ namespace penny
     double       residual;
   };
 
-  // A_nc/A_0 at several mean pressures, solved from the largest down, each
-  // solve started from the previous gap. Returned in the order given.
+  // A_nc/A_0 at several mean pressures without adhesion, each a cold start
+  // (nested iteration; the equilibrium is unique, and starting from the gap
+  // of the next load instead took more iterations: 132 against 110 for the
+  // six loads 3 ... 0.5 sqrt(V) of a 1024^2 random surface).
   std::vector<LoadStep> load_sweep(const HalfSpaceContact &contact, const std::vector<double> &mean_pressures,
                                    const ContactSolverControl &control);
 
