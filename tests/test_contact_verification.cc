@@ -9,10 +9,12 @@
 #include "contact/adhesive_sinusoid.h"
 #include "contact/adhesive_sphere.h"
 #include "contact/extrapolation.h"
+#include "contact/half_space.h"
 #include "fracture/periodic_array.h"
 
 #include <boost/test/unit_test.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 namespace tt = boost::test_tools;
@@ -94,6 +96,29 @@ BOOST_AUTO_TEST_CASE(jkr_sphere_pull_off_approaches_jkr)
       BOOST_TEST(path[k].load < path[k - 1].load);
       BOOST_TEST(path[k].contact_radius < path[k - 1].contact_radius);
     }
+}
+
+BOOST_AUTO_TEST_CASE(bisinusoid_full_contact_pressure)
+{
+  // h = Delta cos(kx) cos(ky) needs p_fc = p* cos(kx) cos(ky) (heights
+  // towards the half-space) with p* = sqrt(2) pi E* Delta/lambda: the mode
+  // has |q| = sqrt(2) k. Checked on a lambda x lambda grid, E* = 2, Delta = 3,
+  // lambda = 5, to rounding.
+  const double           E_star = 2, Delta = 3, lambda = 5, k = 2 * M_PI / lambda;
+  const unsigned int     n = 32;
+  const FourierTransform transform(square_grid(n, lambda));
+  GridField              h(transform.grid().n_points());
+  for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int j = 0; j < n; ++j)
+      h[i * n + j] = Delta * std::cos(k * i * lambda / n) * std::cos(k * j * lambda / n);
+  const GridField p      = full_contact_pressure(transform, h, E_star);
+  const double    p_star = std::sqrt(2.) * M_PI * E_star * Delta / lambda;
+  double          error  = 0;
+  for (unsigned int i = 0; i < n; ++i)
+    for (unsigned int j = 0; j < n; ++j)
+      error = std::max(error, std::abs(p[i * n + j] -
+                                       p_star * std::cos(k * i * lambda / n) * std::cos(k * j * lambda / n)));
+  BOOST_TEST(error <= 1e-12 * p_star);
 }
 
 BOOST_AUTO_TEST_CASE(bisinusoid_near_full_contact)
