@@ -10,7 +10,7 @@
 #include "contact/adhesive_sphere.h"
 #include "contact/extrapolation.h"
 #include "contact/half_space.h"
-#include "fracture/periodic_array.h"
+#include "closed_forms/periodic_array.h"
 
 #include <boost/test/unit_test.hpp>
 
