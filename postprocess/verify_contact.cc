@@ -7,6 +7,7 @@
 //
 // Usage: verify_contact sinusoid|sphere|bisinusoid [quick]
 // ("quick": the two coarsest levels fewer, for a look in minutes).
+#include "closed_forms/periodic_array.h"
 #include "contact/adhesive_bisinusoid.h"
 #include "contact/adhesive_sinusoid.h"
 #include "contact/adhesive_sphere.h"
@@ -104,14 +105,14 @@ namespace
             double     exact, ratio;
             if (is_jump)
               {
-                const adhesive_sinusoid::Extremum jump = adhesive_sinusoid::johnson_jump(alpha);
-                ratio                                  = jump.contact_ratio;
-                exact                                  = jump.load_ratio;
+                const periodic_array::LoadExtremum jump = periodic_array::jump_into_contact(alpha);
+                ratio                                   = jump.contact_ratio;
+                exact                                   = jump.load_ratio;
               }
             else
               {
                 ratio = ratios[k];
-                exact = adhesive_sinusoid::johnson_load(ratio, alpha);
+                exact = periodic_array::johnson_load(ratio, alpha);
               }
             const Extrapolated limit =
                 extrapolate_in_both(zones, relative_spacing, values[k],

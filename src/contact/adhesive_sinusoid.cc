@@ -9,32 +9,6 @@
 
 namespace penny::adhesive_sinusoid
 {
-  double johnson_load(const double contact_ratio, const double alpha)
-  {
-    const double angle = M_PI * contact_ratio;
-    return std::pow(std::sin(angle), 2) - alpha * std::sqrt(std::tan(angle));
-  }
-
-  Extremum johnson_jump(const double alpha)
-  {
-    if (!(alpha > 0) || !(alpha < 25. / 16 * std::pow(0.6, 0.75)))
-      throw std::invalid_argument(
-          "johnson_jump: alpha is outside the allowed range (0, (25/16) (3/5)^(3/4))");
-    const auto stationarity = [&](const double u) {
-      return 4 * u * u * u - alpha * std::pow(1 + std::pow(u, 4), 2);
-    };
-    double low = std::pow(0.6, 0.25), high = low;
-    while (stationarity(high) > 0)
-      high *= 2;
-    for (int k = 0; k < 200; ++k)
-      {
-        const double middle                     = (low + high) / 2;
-        (stationarity(middle) > 0 ? low : high) = middle;
-      }
-    const double contact_ratio = std::atan(low * low) / M_PI;
-    return {contact_ratio, johnson_load(contact_ratio, alpha)};
-  }
-
   namespace
   {
     const double h0 = 1 / M_PI; // p* = pi E* h0/lambda = 1

@@ -6,7 +6,7 @@
 //
 //   p_bar/p* = sin^2(pi a/lambda) - alpha sqrt(tan(pi a/lambda)),   alpha = K_Ic/(p* sqrt(lambda)),
 //
-// with K_Ic = sqrt(2 E* w). The model works in units E* = lambda = p* = 1,
+// with K_Ic = sqrt(2 E* w) (closed_forms/periodic_array.h). The model works in units E* = lambda = p* = 1,
 // where w = alpha^2/2 and the range of the exponential law follows from the
 // cohesive zone l_pz = E* rho^2/(pi w) as rho = alpha sqrt(pi l_pz/2).
 #pragma once
@@ -18,20 +18,6 @@
 
 namespace penny::adhesive_sinusoid
 {
-  // Johnson's p_bar/p* at a/lambda in (0, 1/2).
-  double johnson_load(double contact_ratio, double alpha);
-
-  // The maximum of Johnson's curve, where the surfaces jump into full
-  // contact: with u^2 = tan(pi a/lambda) the curve is stationary where
-  // 4 u^3 = alpha (1 + u^4)^2, the maximum on the branch u^4 > 3/5 (alpha
-  // below (25/16) (3/5)^(3/4), where maximum and minimum merge).
-  struct Extremum
-  {
-    double contact_ratio; // a/lambda
-    double load_ratio;    // p_bar/p*
-  };
-  Extremum johnson_jump(double alpha);
-
   // One discretisation of the problem.
   struct Discretisation
   {
