@@ -10,8 +10,7 @@
 // independently) and the cold start, which first solves on the halved grids
 // (iterations on this grid + on the coarser ones in this grid's units, wall
 // time); then the six loads p_bar/sqrt(V) = 3, 2.5, ..., 0.5 as the
-// random-contact scene runs them (load_sweep: the first cold, each next from
-// the last); and the adhesive solve at 2 sqrt(V) from the adhesionless one
+// random-contact scene runs them (load_sweep: each a cold start); and the adhesive solve at 2 sqrt(V) from the adhesionless one
 // (w, rho with a cohesive zone of lambda0/64, 4 grid spacings at N = 256, and
 // a strength w/rho = sqrt(V)/2).
 //

@@ -11,7 +11,7 @@ fail() { echo "FAIL: $*"; cat stdout stderr; exit 1; }
 "$penny" "$prm" > stdout 2> stderr || fail "exit status $?"
 [ ! -s stderr ] || fail "messages on stderr"
 grep -q "^Results in " stdout || fail "no results folder announced"
-if grep -q "^subsection Verification" "$prm" || "$penny" --print-parameters "$(sed -n 's/^set Scene *= *//p' "$prm")" | grep -q "^subsection Verification"; then
+if "$penny" --print-parameters "$(sed -n 's/^set Scene *= *//p' "$prm")" | grep -q "^subsection Verification"; then
   grep -q "^PASS: " stdout || fail "a scene with a verdict printed no PASS"
 fi
 echo "ok: $(basename "$prm") ran to its results"

@@ -32,8 +32,8 @@ namespace penny
         sections.subsection("Random contact", [&](Entries &entries) {
           entries.numbers(
               "Mean pressures", mean_pressures, {1, 1.5, 2, 2.5, 3}, interval("(]", 0, 100, "sqrt(V)"),
-              "p_bar/sqrt(V), V the variance of the full-contact pressure of the sampled lattice; solved "
-              "from the largest down. Units: sqrt(V).");
+              "p_bar/sqrt(V), V the variance of the full-contact pressure of the sampled lattice; each "
+              "load a cold start. Units: sqrt(V).");
           entries.number("Solver tolerance", solver_tolerance, 1e-8, above(0),
                          "Residual of the constrained CG, in units of the rms height. Units: none.");
           entries.integer("Maximum iterations", max_iterations, 5000u, 1u, 100000000u,
