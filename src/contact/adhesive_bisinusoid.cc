@@ -43,22 +43,20 @@ namespace penny::adhesive_bisinusoid
     return (low + high) / 2;
   }
 
+  // The valley, where the tension peaks, at the grid point (n/2, n/2).
   Model::Model(const Discretisation &discretisation)
-      : discretisation(discretisation),
-        range(discretisation.alpha * std::sqrt(M_PI * discretisation.process_zone / 2))
+      : discretisation(checked(discretisation,
+                               discretisation.alpha >= 0 &&
+                                   (discretisation.alpha == 0 || discretisation.process_zone > 0) &&
+                                   discretisation.n_points >= 16,
+                               "adhesive bi-sinusoid: needs alpha >= 0, l_pz > 0 and at least 16 points")),
+        surface(square_grid(discretisation.n_points, cell),
+                [n = discretisation.n_points](unsigned int i, unsigned int j) {
+                  return amplitude / 2 * (std::cos(2 * M_PI * i / n) + std::cos(2 * M_PI * j / n));
+                },
+                {discretisation.alpha * discretisation.alpha / 2,
+                 discretisation.alpha * std::sqrt(M_PI * discretisation.process_zone / 2)})
   {
-    if (!(discretisation.alpha >= 0) || (discretisation.alpha > 0 && !(discretisation.process_zone > 0)) ||
-        discretisation.n_points < 16)
-      throw std::invalid_argument("adhesive bi-sinusoid: needs alpha >= 0, l_pz > 0 and at least 16 points");
-    const unsigned int n = discretisation.n_points;
-    transform            = std::make_unique<FourierTransform>(square_grid(n, cell));
-    // The valley, where the tension peaks, at the grid point (n/2, n/2).
-    GridField h(transform->grid().n_points());
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int j = 0; j < n; ++j)
-        h[i * n + j] = amplitude / 2 * (std::cos(2 * M_PI * i / n) + std::cos(2 * M_PI * j / n));
-    const Adhesion adhesion{discretisation.alpha * discretisation.alpha / 2, range};
-    contact = std::make_unique<HalfSpaceContact>(*transform, std::move(h), 1., adhesion);
   }
 
   State Model::state(const ContactSolution &solution) const
@@ -67,8 +65,9 @@ namespace penny::adhesive_bisinusoid
     const unsigned int centre = discretisation.n_points / 2;
     if (discretisation.alpha > 0)
       {
+        const double range = surface.adhesion().range;
         if (solution.gap[centre * discretisation.n_points + centre] > range)
-          s.gap_radius = level_radius(transform->grid(), solution.gap, range, centre, centre);
+          s.gap_radius = level_radius(surface.grid(), solution.gap, range, centre, centre);
       }
     else if (s.noncontact_fraction > 0)
       s.gap_radius = std::sqrt(s.noncontact_fraction * cell * cell / M_PI);
@@ -78,9 +77,9 @@ namespace penny::adhesive_bisinusoid
   std::vector<State> Model::loading(const std::vector<double>  &load_ratios,
                                     const ContactSolverControl &control) const
   {
-    const HalfSpaceContact plain(*transform, contact->heights(), 1.);
-    ContactPath            path(*contact, "loading", control, plain.solve(load_ratios.front(), control).gap);
-    std::vector<State>     states;
+    ContactPath        path(surface.adhesive(), "loading", control,
+                            surface.adhesionless().solve(load_ratios.front(), control).gap);
+    std::vector<State> states;
     for (const double load : load_ratios)
       states.push_back(state(path.to_mean_pressure(load)));
     return states;
@@ -90,11 +89,10 @@ namespace penny::adhesive_bisinusoid
   {
     if (!(discretisation.alpha > 0))
       throw std::invalid_argument("adhesive bi-sinusoid: without adhesion the gaps close only at p_bar = p*");
-    const HalfSpaceContact plain(*transform, contact->heights(), 1.);
-    const ContactSolution  from =
-        contact->solve(start_load_ratio, control, plain.solve(start_load_ratio, control).gap);
+    const ContactSolution from = surface.adhesive().solve(
+        start_load_ratio, control, surface.adhesionless().solve(start_load_ratio, control).gap);
     if (!(from.contact_fraction < 1))
       throw std::runtime_error("adhesive bi-sinusoid: the gap is already closed at the start load");
-    return state(load_extremum(*contact, control, from, 0.8, true));
+    return state(load_extremum(surface.adhesive(), control, from, 0.8, true));
   }
 } // namespace penny::adhesive_bisinusoid

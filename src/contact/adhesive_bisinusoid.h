@@ -16,9 +16,8 @@
 //   and the gaps close on loading at 1 - p_bar/p* = psi (2 pi)^(2/5) alpha^(4/5).
 #pragma once
 
-#include "contact/half_space_contact.h"
+#include "contact/rigid_surface.h"
 
-#include <memory>
 #include <optional>
 #include <vector>
 
@@ -70,9 +69,7 @@ namespace penny::adhesive_bisinusoid
   private:
     State state(const ContactSolution &solution) const;
 
-    Discretisation                    discretisation;
-    double                            range; // rho
-    std::unique_ptr<FourierTransform> transform;
-    std::unique_ptr<HalfSpaceContact> contact;
+    Discretisation discretisation;
+    RigidSurface   surface;
   };
 } // namespace penny::adhesive_bisinusoid

@@ -11,22 +11,22 @@ namespace penny::adhesive_sinusoid
 {
   namespace
   {
-    const double h0 = 1 / M_PI; // p* = pi E* h0/lambda = 1
-  }
+    // The amplitude for which p* = pi E* h0/lambda = 1.
+    const double h0 = 1 / M_PI;
+  } // namespace
 
   Model::Model(const Discretisation &discretisation)
-      : discretisation(discretisation),
-        range(discretisation.alpha * std::sqrt(M_PI * discretisation.process_zone / 2))
+      : discretisation(checked(discretisation,
+                               discretisation.alpha > 0 && discretisation.process_zone > 0 &&
+                                   discretisation.n_points >= 16,
+                               "adhesive sinusoid: needs alpha > 0, l_pz > 0 and at least 16 points")),
+        surface({discretisation.n_points, 1, 1., 1. / discretisation.n_points},
+                [n = discretisation.n_points](unsigned int i, unsigned int) {
+                  return 2 * h0 * std::pow(std::sin(M_PI * i / n), 2);
+                },
+                {discretisation.alpha * discretisation.alpha / 2,
+                 discretisation.alpha * std::sqrt(M_PI * discretisation.process_zone / 2)})
   {
-    if (!(discretisation.alpha > 0) || !(discretisation.process_zone > 0) || discretisation.n_points < 16)
-      throw std::invalid_argument("adhesive sinusoid: needs alpha > 0, l_pz > 0 and at least 16 points");
-    const unsigned int n = discretisation.n_points;
-    transform            = std::make_unique<FourierTransform>(PeriodicGrid{n, 1, 1., 1. / n});
-    GridField h(n);
-    for (unsigned int i = 0; i < n; ++i)
-      h[i] = 2 * h0 * std::pow(std::sin(M_PI * i / n), 2);
-    const double w = discretisation.alpha * discretisation.alpha / 2;
-    contact        = std::make_unique<HalfSpaceContact>(*transform, std::move(h), 1., Adhesion{w, range});
   }
 
   // The strip is centred on the crest x = lambda/2 (i = n/2); its edges are
@@ -34,7 +34,7 @@ namespace penny::adhesive_sinusoid
   CurvePoint Model::state(const ContactSolution &solution) const
   {
     const double half_width =
-        level_radius(transform->grid(), solution.gap, range, discretisation.n_points / 2, 0);
+        level_radius(surface.grid(), solution.gap, surface.adhesion().range, discretisation.n_points / 2, 0);
     return {half_width, solution.mean_pressure, solution.mean_gap / h0, solution.iterations};
   }
 
@@ -42,9 +42,9 @@ namespace penny::adhesive_sinusoid
                                                       const ContactSolverControl &control) const
   {
     // Start from the adhesionless strip of the first half-width (Westergaard's load).
-    const HalfSpaceContact plain(*transform, contact->heights(), 1.);
-    ContactSolution current = plain.solve(std::pow(std::sin(M_PI * contact_ratios.front()), 2), control);
-    current                 = contact->solve_at_mean_gap(current.mean_gap, control, current.gap);
+    ContactSolution current =
+        surface.adhesionless().solve(std::pow(std::sin(M_PI * contact_ratios.front()), 2), control);
+    current = surface.adhesive().solve_at_mean_gap(current.mean_gap, control, current.gap);
     CurvePoint              point      = state(current);
     unsigned int            iterations = current.iterations;
     std::vector<CurvePoint> points;
@@ -53,7 +53,7 @@ namespace penny::adhesive_sinusoid
         // a/lambda falls as the mean gap rises. Bracket the target by steps
         // of 10 %, then regula falsi (Illinois) on the bracket.
         const auto at = [&](const double mean_gap) {
-          current = contact->solve_at_mean_gap(mean_gap * h0, control, current.gap);
+          current = surface.adhesive().solve_at_mean_gap(mean_gap * h0, control, current.gap);
           iterations += current.iterations;
           return state(current);
         };
@@ -101,8 +101,8 @@ namespace penny::adhesive_sinusoid
   {
     // From the strip of a/lambda = 0.3, the mean gap falls by 10 % a step.
     const CurvePoint      start = loads_at_half_widths({0.3}, control).back();
-    const ContactSolution from  = contact->solve_at_mean_gap(start.mean_gap * h0, control);
-    CurvePoint            jump  = state(load_extremum(*contact, control, from, 0.9, true));
+    const ContactSolution from  = surface.adhesive().solve_at_mean_gap(start.mean_gap * h0, control);
+    CurvePoint            jump  = state(load_extremum(surface.adhesive(), control, from, 0.9, true));
     jump.iterations             = 0;
     return jump;
   }

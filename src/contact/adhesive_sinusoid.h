@@ -11,9 +11,8 @@
 // cohesive zone l_pz = E* rho^2/(pi w) as rho = alpha sqrt(pi l_pz/2).
 #pragma once
 
-#include "contact/half_space_contact.h"
+#include "contact/rigid_surface.h"
 
-#include <memory>
 #include <vector>
 
 namespace penny::adhesive_sinusoid
@@ -57,9 +56,7 @@ namespace penny::adhesive_sinusoid
   private:
     CurvePoint state(const ContactSolution &solution) const;
 
-    Discretisation                    discretisation;
-    double                            range; // rho
-    std::unique_ptr<FourierTransform> transform;
-    std::unique_ptr<HalfSpaceContact> contact;
+    Discretisation discretisation;
+    RigidSurface   surface;
   };
 } // namespace penny::adhesive_sinusoid

@@ -14,32 +14,25 @@ namespace penny::adhesive_sphere
     return 4 * a3 / 3 - std::sqrt(8 * M_PI * work_of_adhesion * a3);
   }
 
+  // The apex at the grid point (n/2, n/2); x, y periodic offsets from it.
   Model::Model(const Discretisation &discretisation)
-      : discretisation(discretisation),
-        range_(std::sqrt(M_PI * work_of_adhesion * discretisation.process_zone))
+      : discretisation(checked(discretisation,
+                               discretisation.process_zone > 0 && discretisation.period > 4 &&
+                                   discretisation.n_points >= 16,
+                               "adhesive sphere: needs l_pz > 0, a period above 4 a_pull-off and 16 points")),
+        surface(square_grid(discretisation.n_points, discretisation.period),
+                [n = discretisation.n_points, L = discretisation.period](unsigned int i, unsigned int j) {
+                  const double x = (double(i) - n / 2) * L / n, y = (double(j) - n / 2) * L / n;
+                  return -(x * x + y * y) / 2;
+                },
+                {work_of_adhesion, std::sqrt(M_PI * work_of_adhesion * discretisation.process_zone)})
   {
-    if (!(discretisation.process_zone > 0) || !(discretisation.period > 4) || discretisation.n_points < 16)
-      throw std::invalid_argument(
-          "adhesive sphere: needs l_pz > 0, a period above 4 a_pull-off and 16 points");
-    const unsigned int n = discretisation.n_points;
-    const double       L = discretisation.period;
-    transform            = std::make_unique<FourierTransform>(square_grid(n, L));
-    // The apex at the grid point (n/2, n/2); x, y periodic offsets from it.
-    GridField h(transform->grid().n_points());
-    for (unsigned int i = 0; i < n; ++i)
-      for (unsigned int j = 0; j < n; ++j)
-        {
-          const double x = (double(i) - n / 2) * L / n, y = (double(j) - n / 2) * L / n;
-          h[i * n + j] = -(x * x + y * y) / 2;
-        }
-    contact =
-        std::make_unique<HalfSpaceContact>(*transform, std::move(h), 1., Adhesion{work_of_adhesion, range_});
   }
 
   State Model::state(const ContactSolution &solution) const
   {
     const double area = std::pow(discretisation.period, 2);
-    const double a    = level_radius(transform->grid(), solution.gap, range_, discretisation.n_points / 2,
+    const double a    = level_radius(surface.grid(), solution.gap, range(), discretisation.n_points / 2,
                                      discretisation.n_points / 2);
     return {a, solution.mean_pressure * area, solution.mean_gap};
   }
@@ -48,17 +41,16 @@ namespace penny::adhesive_sphere
   // on at its mean gap: the contact grows, near JKR's at zero load.
   ContactSolution Model::start(const ContactSolverControl &control) const
   {
-    const HalfSpaceContact plain(*transform, contact->heights(), 1.);
-    const ContactSolution  hertz =
-        plain.solve(4 * std::pow(1.2, 3) / 3 / std::pow(discretisation.period, 2), control);
-    return contact->solve_at_mean_gap(hertz.mean_gap, control, hertz.gap);
+    const ContactSolution hertz =
+        surface.adhesionless().solve(4 * std::pow(1.2, 3) / 3 / std::pow(discretisation.period, 2), control);
+    return surface.adhesive().solve_at_mean_gap(hertz.mean_gap, control, hertz.gap);
   }
 
   std::vector<State> Model::unloading(const ContactSolverControl &control, const unsigned int steps,
                                       const double increment) const
   {
     const ContactSolution from = start(control);
-    ContactPath           path(*contact, "unloading", control, from.gap);
+    ContactPath           path(surface.adhesive(), "unloading", control, from.gap);
     std::vector<State>    states;
     double                mean_gap = from.mean_gap;
     for (unsigned int k = 0; k <= steps; ++k)
@@ -74,6 +66,6 @@ namespace penny::adhesive_sphere
     const ContactSolution from = start(control);
     // Steps of 0.04 in the approach (about 1.2 from zero load to pull-off).
     const double factor = 1 + 0.04 / from.mean_gap;
-    return state(load_extremum(*contact, control, from, factor, false));
+    return state(load_extremum(surface.adhesive(), control, from, factor, false));
   }
 } // namespace penny::adhesive_sphere

@@ -13,9 +13,8 @@
 // as the period grows.
 #pragma once
 
-#include "contact/half_space_contact.h"
+#include "contact/rigid_surface.h"
 
-#include <memory>
 #include <vector>
 
 namespace penny::adhesive_sphere
@@ -57,15 +56,13 @@ namespace penny::adhesive_sphere
     // The pull-off load under prescribed load: the least load along that path.
     State pull_off(const ContactSolverControl &control) const;
 
-    double range() const { return range_; }
+    double range() const { return surface.adhesion().range; }
 
   private:
     ContactSolution start(const ContactSolverControl &control) const;
     State           state(const ContactSolution &solution) const;
 
-    Discretisation                    discretisation;
-    double                            range_; // rho
-    std::unique_ptr<FourierTransform> transform;
-    std::unique_ptr<HalfSpaceContact> contact;
+    Discretisation discretisation;
+    RigidSurface   surface;
   };
 } // namespace penny::adhesive_sphere

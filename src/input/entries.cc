@@ -170,17 +170,30 @@ namespace penny
       throw no_number(name(entry), prm.get(entry), range.text);
   }
 
-  void Entries::span(const std::string &quantity, double &smallest, double &largest,
-                     const double default_smallest, const double default_largest, const Range &range,
-                     const std::string &documentation)
+  double Sweep::at(const unsigned int i) const
   {
+    if (n_points == 1)
+      return smallest;
+    if (logarithmic)
+      return smallest * std::pow(largest / smallest, static_cast<double>(i) / (n_points - 1));
+    return smallest + i * (largest - smallest) / (n_points - 1);
+  }
+
+  void Entries::sweep(const std::string &quantity, const std::string &count, Sweep &sweep,
+                      const Sweep &defaults, const unsigned int min_points, const unsigned int max_points,
+                      const Range &range, const std::string &documentation)
+  {
+    sweep.logarithmic = defaults.logarithmic;
     // "(Smallest QUANTITY, " and the upper end of the interval: "(Smallest alpha, 0.56]".
     const std::string upper = range.text.substr(range.text.find(", ") + 2);
-    number("Smallest " + quantity, smallest, default_smallest, range, documentation);
-    number("Largest " + quantity, largest, default_largest,
+    number("Smallest " + quantity, sweep.smallest, defaults.smallest, range, documentation);
+    number("Largest " + quantity, sweep.largest, defaults.largest,
            {"(Smallest " + quantity + ", " + upper, [](double) { return true; }}, documentation);
-    require(range.contains(largest) && largest > smallest, "Largest " + quantity, largest,
-            "(Smallest " + quantity + " = " + shortest(smallest) + ", " + upper);
+    require(range.contains(sweep.largest) && sweep.largest > sweep.smallest, "Largest " + quantity,
+            sweep.largest, "(Smallest " + quantity + " = " + shortest(sweep.smallest) + ", " + upper);
+    integer(count, sweep.n_points, defaults.n_points, min_points, max_points,
+            "Points from the smallest to the largest " + quantity + ", evenly spaced" +
+                (defaults.logarithmic ? " in log(" + quantity + ")" : "") + ". Units: none.");
   }
 
   void Entries::flag(const std::string &entry, bool &value, const bool default_value,

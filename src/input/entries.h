@@ -46,6 +46,18 @@ namespace penny
   // The same for a signed quantity that may vanish: 0 or |x| in [1e-30, 1e30].
   Range signed_magnitude(const std::string &unit);
 
+  // The points of a curve: n_points values from the smallest to the largest,
+  // evenly spaced in the value or in its logarithm.
+  struct Sweep
+  {
+    double       smallest, largest;
+    unsigned int n_points;
+    bool         logarithmic = false;
+
+    // The i-th point; the smallest if it is the only one.
+    double at(unsigned int i) const;
+  };
+
   // The names of a Selection entry and the values they stand for.
   template <typename Enum> using EnumNames = std::vector<std::pair<std::string, Enum>>;
 
@@ -102,10 +114,13 @@ namespace penny
     void file(const std::string &entry, std::string &value, const std::string &default_value,
               const std::string &documentation);
 
-    // 'Smallest QUANTITY' and 'Largest QUANTITY' of a sweep, both in `range`
-    // (an interval) and the largest above the smallest.
-    void span(const std::string &quantity, double &smallest, double &largest, double default_smallest,
-              double default_largest, const Range &range, const std::string &documentation);
+    // A sweep's 'Smallest QUANTITY' and 'Largest QUANTITY', both in `range`
+    // (an interval) and the largest above the smallest, documented by
+    // `documentation`, and the number of its points, the entry `count`, in
+    // [min_points, max_points]; spaced as `defaults` are.
+    void sweep(const std::string &quantity, const std::string &count, Sweep &sweep, const Sweep &defaults,
+               unsigned int min_points, unsigned int max_points, const Range &range,
+               const std::string &documentation);
 
     // A condition between entries, checked once they are read: throws
     // "Subsection/ENTRY = VALUE is outside the allowed range RANGE" unless `ok`.

@@ -63,11 +63,6 @@ namespace penny
       }
   }
 
-  double AreaLoadParameters::mean_pressure(const unsigned int i) const
-  {
-    return smallest_mean_pressure + i * (largest_mean_pressure - smallest_mean_pressure) / (n_points - 1);
-  }
-
   void area_load_section(Sections &sections, AreaLoadParameters &area_load)
   {
     sections.subsection("Area-load", [&](Entries &entries) {
@@ -80,13 +75,10 @@ namespace penny
           "sections.");
       // Near full contact the gaps are isolated for p_bar of a few sqrt(V);
       // far beyond, the laws underflow to 0 or overflow.
-      entries.span("mean pressure", area_load.smallest_mean_pressure, area_load.largest_mean_pressure, 0, 3,
-                   interval("[]", -100, 100, "sqrt(V)"),
-                   "The range of p_bar/sqrt(V) of the curves (compression positive). Units: sqrt(V).");
-      entries.integer(
-          "Number of points", area_load.n_points, 61u, 2u, 100000u,
-          "Points of every curve, evenly spaced: mean pressures, or p0/sqrt(V) in zero-load-gap-area. "
-          "Units: none.");
+      entries.sweep("mean pressure", "Number of points", area_load.mean_pressures, {0, 3, 61}, 2, 100000,
+                    interval("[]", -100, 100, "sqrt(V)"),
+                    "The range of p_bar/sqrt(V) of the curves (compression positive); zero-load-gap-area "
+                    "takes its number of points. Units: sqrt(V).");
       entries.numbers("Hurst exponents", area_load.hurst_exponents, {0.75, 0.5, 0.25}, interval("()", 0, 1),
                       "area-load: one panel per H; magnification-scaling: one fit per H. Units: none.");
       // Beyond 1e30 the spectral moments leave the range of a double.

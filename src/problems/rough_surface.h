@@ -25,12 +25,8 @@ namespace penny
   struct AreaLoadParameters
   {
     bool                convention_is_paper;
-    double              smallest_mean_pressure, largest_mean_pressure; // p_bar/sqrt(V)
-    unsigned int        n_points;
+    Sweep               mean_pressures; // p_bar/sqrt(V)
     std::vector<double> hurst_exponents, magnifications;
-
-    // The i-th of the n_points mean pressures p_bar/sqrt(V).
-    double mean_pressure(unsigned int i) const;
   };
 
   // Area-load.

@@ -38,9 +38,9 @@ namespace penny
               const GapPopulation gaps = surface.population(hurst, zeta);
               const GapPopulation adhesionless{gaps.prefactor, 0};
               const auto          exact = exact_gap_law(gaps.adhesion);
-              for (unsigned int i = 0; i < range.n_points; ++i)
+              for (unsigned int i = 0; i < range.mean_pressures.n_points; ++i)
                 {
-                  const double p_bar    = range.mean_pressure(i);
+                  const double p_bar    = range.mean_pressures.at(i);
                   const double closed   = linear_law_noncontact_area(gaps, p_bar);
                   const double integral = noncontact_area(gaps, linear_gap_law(gaps.adhesion), p_bar);
                   worst                 = std::max(worst, relative_error(integral, closed));
@@ -56,8 +56,8 @@ namespace penny
                                linear_law_noncontact_area(gaps, 0), noncontact_area(gaps, exact, 0)});
             }
         results.write_csv("area-load.csv", table);
-        log << "Area-load curves, A_nc/A_0 against p_bar/sqrt(V) from " << range.smallest_mean_pressure
-            << " to " << range.largest_mean_pressure << " (paper Figs. 4 and 5)\n"
+        log << "Area-load curves, A_nc/A_0 against p_bar/sqrt(V) from " << range.mean_pressures.smallest
+            << " to " << range.mean_pressures.largest << " (paper Figs. 4 and 5)\n"
             << surface.convention_line() << '\n';
         summary.print(log);
         std::ostringstream error;

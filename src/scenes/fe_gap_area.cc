@@ -53,8 +53,8 @@ namespace penny
         const GapPopulation exact_gaps{std::sqrt(2 * M_PI), adhesion};
         const GapPopulation fe_gaps{exact_gaps.prefactor, minimum.tension / sqrt_V};
         const unsigned int  n_tensions = n_tabulated_tensions;
-        const double t_max   = std::max(integration_limit(fe_gaps.adhesion, range.smallest_mean_pressure),
-                                        integration_limit(exact_gaps.adhesion, range.smallest_mean_pressure));
+        const double t_max   = std::max(integration_limit(fe_gaps.adhesion, range.mean_pressures.smallest),
+                                        integration_limit(exact_gaps.adhesion, range.mean_pressures.smallest));
         const auto   fe_P    = chebyshev_tensions(fe_gaps.adhesion, t_max, n_tensions);
         const auto   exact_P = chebyshev_tensions(exact_gaps.adhesion, t_max, n_tensions);
         const auto   exact   = exact_gap_law(exact_gaps.adhesion);
@@ -84,9 +84,9 @@ namespace penny
         double worst = 0, worst_table = 0;
         Table  table({"p_bar/sqrtV", "A_nc FE g", "A_nc closed-form g", "A_nc closed-form g tabulated",
                       "relative difference"});
-        for (unsigned int i = 0; i < range.n_points; ++i)
+        for (unsigned int i = 0; i < range.mean_pressures.n_points; ++i)
           {
-            const double p_bar     = range.mean_pressure(i);
+            const double p_bar     = range.mean_pressures.at(i);
             const double fe        = noncontact_area(fe_gaps, fe_law, p_bar);
             const double reference = noncontact_area(exact_gaps, exact, p_bar);
             const double tabulated = noncontact_area(exact_gaps, exact_table, p_bar);

@@ -21,10 +21,8 @@ namespace penny
       {
         input.sections(sections);
         sections.subsection("Gap-tension curve", [&](Entries &entries) {
-          entries.span("c_hat", smallest_c_hat, largest_c_hat, 0.3, 4, above(0),
-                       "The range of the curve, c/c_min. Units: none.");
-          entries.integer("Number of points", n_points, 24u, 2u, 1000u,
-                          "Points, evenly spaced in c_hat. Units: none.");
+          entries.sweep("c_hat", "Number of points", c_hats, {0.3, 4, 24}, 2, 1000, above(0),
+                        "The range of the curve, c/c_min. Units: none.");
         });
       }
 
@@ -42,17 +40,14 @@ namespace penny
                                    {"p_hat exact", digits},
                                    {"p_hat linear", digits},
                                    {"relative error", digits}});
-        const auto          c_hat_at = [&](const unsigned int i) {
-          return smallest_c_hat + i * (largest_c_hat - smallest_c_hat) / (n_points - 1);
-        };
         std::vector<double> radii;
-        for (unsigned int i = 0; i < n_points; ++i)
-          radii.push_back(c_hat_at(i) * c_min);
+        for (unsigned int i = 0; i < c_hats.n_points; ++i)
+          radii.push_back(c_hats.at(i) * c_min);
         const std::vector<PennyUnitSifs> sifs  = search.gaps.unit_load_sifs(radii, MPI_COMM_WORLD);
         double                           worst = 0;
-        for (unsigned int i = 0; i < n_points; ++i)
+        for (unsigned int i = 0; i < c_hats.n_points; ++i)
           {
-            const double        c_hat  = c_hat_at(i);
+            const double        c_hat  = c_hats.at(i);
             const PennyUnitSifs K      = sifs[i];
             const double        p_fe   = (K_Ic + K.quadratic / (2 * R_p)) / K.uniform / p0;
             const double        exact  = (c_hat * c_hat + 4 / std::sqrt(c_hat)) / 5;
@@ -69,8 +64,7 @@ namespace penny
       }
 
       AdhesiveGapInput input;
-      double           smallest_c_hat, largest_c_hat;
-      unsigned int     n_points;
+      Sweep            c_hats;
     };
   } // namespace
 

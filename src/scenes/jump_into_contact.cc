@@ -28,12 +28,10 @@ namespace penny
         periodic.sections(sections);
         sections.subsection("Jump into contact", [&](Entries &entries) {
           // Above 0.56 the maximum leaves the search interval.
-          entries.span("alpha", smallest_alpha, largest_alpha, 1e-4, 0.5, interval("[]", 1e-8, 0.56),
-                       "The range of alpha = K_Ic/(p* sqrt(lambda)). Units: none.");
-          entries.integer(
-              "Number of alphas", n_alphas, 9u, 1u, 1000u,
-              "alphas evenly spaced in log(alpha) from the smallest to the largest; each is one FE "
-              "maximisation over the contact half-width. Units: none.");
+          entries.sweep("alpha", "Number of alphas", alphas, {1e-4, 0.5, 9, true}, 1, 1000,
+                        interval("[]", 1e-8, 0.56),
+                        "The range of alpha = K_Ic/(p* sqrt(lambda)); each alpha is one FE maximisation over "
+                        "the contact half-width. Units: none.");
         });
       }
 
@@ -73,12 +71,12 @@ namespace penny
                           {"Johnson/small-alpha law", Table::Format{6, false}}});
         double     worst = 0;
         const auto maximum =
-            spread_over_ranks<FeLoadExtremum>(MPI_COMM_WORLD, n_alphas, [&](const unsigned int i) {
-              return fe_jump_into_contact(search.gaps, alpha_at(i), MPI_COMM_SELF);
+            spread_over_ranks<FeLoadExtremum>(MPI_COMM_WORLD, alphas.n_points, [&](const unsigned int i) {
+              return fe_jump_into_contact(search.gaps, alphas.at(i), MPI_COMM_SELF);
             });
-        for (unsigned int i = 0; i < n_alphas; ++i)
+        for (unsigned int i = 0; i < alphas.n_points; ++i)
           {
-            const double         alpha = alpha_at(i);
+            const double         alpha = alphas.at(i);
             const FeLoadExtremum fe    = maximum[i];
             const auto           exact = periodic_array::jump_into_contact(alpha);
             const double         law   = periodic_array::small_alpha_jump(alpha);
@@ -97,18 +95,8 @@ namespace penny
         return verdict(std::max(relative_error(critical.alpha, periodic_array::critical_alpha), worst));
       }
 
-      // The i-th of the alphas, evenly spaced in log(alpha).
-      double alpha_at(const unsigned int i) const
-      {
-        if (n_alphas == 1)
-          return smallest_alpha;
-        return smallest_alpha *
-               std::pow(largest_alpha / smallest_alpha, static_cast<double>(i) / (n_alphas - 1));
-      }
-
       PeriodicGapInput periodic;
-      double           smallest_alpha, largest_alpha;
-      unsigned int     n_alphas;
+      Sweep            alphas;
     };
   } // namespace
 

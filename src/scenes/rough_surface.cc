@@ -74,9 +74,9 @@ namespace penny
         const auto &range = surface.area_load;
         Table       curve({"p_bar/sqrtV", "A_nc paper", "A_nc consistent", "A_nc paper exact g",
                            "A_nc consistent exact g"});
-        for (unsigned int i = 0; i < range.n_points; ++i)
+        for (unsigned int i = 0; i < range.mean_pressures.n_points; ++i)
           {
-            const double p_bar = range.mean_pressure(i);
+            const double p_bar = range.mean_pressures.at(i);
             curve.add_row({p_bar, linear_law_noncontact_area(gaps[0], p_bar),
                            linear_law_noncontact_area(gaps[1], p_bar),
                            noncontact_area(gaps[0], exact_gap_law(gaps[0].adhesion), p_bar),
@@ -90,9 +90,9 @@ namespace penny
         publish(conventions_table(summits, gaps), "rough-surface-conventions.csv", results, log);
         log << "(the paper convention replaces its 3 pi R_p eta sqrt(V) by sqrt(2 pi) = "
             << std::sqrt(2 * M_PI) << ")\n"
-            << "A_nc/A_0 at p_bar = " << range.smallest_mean_pressure << " sqrt(V), linear law: paper "
-            << linear_law_noncontact_area(gaps[0], range.smallest_mean_pressure) << ", consistent "
-            << linear_law_noncontact_area(gaps[1], range.smallest_mean_pressure) << '\n'
+            << "A_nc/A_0 at p_bar = " << range.mean_pressures.smallest << " sqrt(V), linear law: paper "
+            << linear_law_noncontact_area(gaps[0], range.mean_pressures.smallest) << ", consistent "
+            << linear_law_noncontact_area(gaps[1], range.mean_pressures.smallest) << '\n'
             << "Tables: " << results.directory().string()
             << "/rough-surface.csv (both conventions), rough-surface-moments.csv, "
                "rough-surface-conventions.csv\n";

@@ -22,10 +22,8 @@ namespace penny
         gap.sections(sections);
         parabola_section(sections, load);
         sections.subsection("Stress intensity curve", [&](Entries &entries) {
-          entries.span("c/a", smallest, largest, 0.1, 1.5, interval("(]", 0, 10),
-                       "The gap radii of the curve, in units of the parabola's a.");
-          entries.integer("Number of points", n_points, 15u, 1u, 1000u,
-                          "Gap radii evenly spaced in c/a from the smallest to the largest. Units: none.");
+          entries.sweep("c/a", "Number of points", ratios, {0.1, 1.5, 15}, 1, 1000, interval("(]", 0, 10),
+                        "The gap radii of the curve, in units of the parabola's a.");
         });
       }
 
@@ -34,9 +32,8 @@ namespace penny
         PennyGapSearch      search(gap, log);
         const double        a = load.tension_radius, P = load.peak_tension;
         std::vector<double> radii;
-        for (unsigned int i = 0; i < n_points; ++i)
-          radii.push_back(a *
-                          (n_points == 1 ? smallest : smallest + (largest - smallest) * i / (n_points - 1)));
+        for (unsigned int i = 0; i < ratios.n_points; ++i)
+          radii.push_back(a * ratios.at(i));
         const auto sifs = search.gaps.unit_load_sifs(radii, MPI_COMM_WORLD);
 
         Table  curve({{"c/a", Table::Format{6, false}},
@@ -67,8 +64,7 @@ namespace penny
 
       PennyGapInput  gap;
       LoadParameters load;
-      double         smallest, largest;
-      unsigned int   n_points;
+      Sweep          ratios; // c/a
     };
   } // namespace
 

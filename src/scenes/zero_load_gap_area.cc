@@ -38,9 +38,10 @@ namespace penny
         double       worst   = 0;
         Table        table({"p0/sqrtV", "A_nc linear closed form", "A_nc linear integral", "A_nc exact g",
                             "A_c Persson-type"});
-        for (unsigned int i = 0; i < range.n_points; ++i)
+        const Sweep  adhesions{0, largest, range.mean_pressures.n_points}; // p0/sqrt(V)
+        for (unsigned int i = 0; i < adhesions.n_points; ++i)
           {
-            const GapPopulation gaps{gaps_of.prefactor, largest * i / (range.n_points - 1)};
+            const GapPopulation gaps{gaps_of.prefactor, adhesions.at(i)};
             const double        closed   = linear_law_noncontact_area(gaps, 0);
             const double        integral = noncontact_area(gaps, linear_gap_law(gaps.adhesion), 0);
             worst                        = std::max(worst, relative_error(integral, closed));
