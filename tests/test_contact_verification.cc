@@ -1,5 +1,5 @@
 // The adhesive solver against problems with exact answers, small enough for
-// a test (postprocess/verify_contact runs them at full size): Johnson's
+// a test (the scenes bem-johnson, jkr-sphere and bem-bisinusoid run them at full size): Johnson's
 // sinusoid extrapolated to the JKR limit, the JKR sphere's pull-off moving
 // towards -(3/2) pi w R as the range shrinks, and the bi-sinusoid near full
 // contact against its isolated-gap limits.

@@ -196,6 +196,21 @@ namespace penny
                 (defaults.logarithmic ? " in log(" + quantity + ")" : "") + ". Units: none.");
   }
 
+  void Entries::decreasing_numbers(const std::string &entry, std::vector<double> &values,
+                                   const std::vector<double> &defaults, const std::size_t min_count,
+                                   const Range &range, const std::string &documentation)
+  {
+    const std::string allowed =
+        "at least " + std::to_string(min_count) + " numbers in " + range.text + ", each below the one before";
+    numbers(entry, values, defaults, range,
+            documentation + " At least " + std::to_string(min_count) + ", decreasing.");
+    if (!reading_)
+      return;
+    require(values.size() >= min_count, entry, values.size(), allowed);
+    for (std::size_t k = 1; k < values.size(); ++k)
+      require(values[k] < values[k - 1], entry, values[k], allowed);
+  }
+
   void Entries::flag(const std::string &entry, bool &value, const bool default_value,
                      const std::string &documentation)
   {

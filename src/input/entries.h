@@ -86,6 +86,12 @@ namespace penny
     void numbers(const std::string &entry, std::vector<double> &values, const std::vector<double> &defaults,
                  const Range &range, const std::string &documentation);
 
+    // The same, at least `min_count` numbers and each below the one before:
+    // a refinement sequence, the finest last.
+    void decreasing_numbers(const std::string &entry, std::vector<double> &values,
+                            const std::vector<double> &defaults, std::size_t min_count, const Range &range,
+                            const std::string &documentation);
+
     void flag(const std::string &entry, bool &value, bool default_value, const std::string &documentation);
 
     // One of the names in `names`.

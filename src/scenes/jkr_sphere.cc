@@ -1,0 +1,131 @@
+// jkr-sphere: the JKR sphere by the adhesive boundary-element solver
+// (contact/adhesive_sphere.h): the pull-off load under prescribed load at
+// each cohesive zone l_pz, extrapolated to l_pz -> 0 and to an infinite
+// period, against JKR's -(3/2) pi w R; and the contact radius against the
+// load along an unloading path beside JKR's F(a). PASS when the
+// extrapolated pull-off lies within Verification/Tolerance of JKR's,
+// relative.
+#include "contact/adhesive_sphere.h"
+#include "contact/extrapolation.h"
+#include "scenes/scene.h"
+
+#include <deal.II/base/timer.h>
+
+#include <cmath>
+
+namespace penny
+{
+  namespace
+  {
+    struct JkrSphereScene : Scene
+    {
+      void parameters(Sections &sections) override
+      {
+        sections.subsection("JKR sphere", [&](Entries &entries) {
+          entries.decreasing_numbers(
+              "Cohesive zones l_pz/a", zones, {0.1, 0.05, 0.025, 0.0125, 0.00625}, 3, interval("[]", 1e-4, 1),
+              "l_pz = E* rho^2/(pi w), in units of JKR's contact radius at pull-off a; the pull-off is "
+              "extrapolated to 0 through the finest four (exponents 1/2, 1, 3/2: the cohesive zone's force "
+              "outside the contact falls like l_pz^(1/2)). Units: a.");
+          entries.number("Period L/a", period, 6, interval("[]", 4.5, 100),
+                         "The side of the periodic cell, one sphere each. Units: a.");
+          entries.number("Points per cohesive zone", points_per_zone, 4,
+                         interval("[]", HalfSpaceContact::min_process_zone_points, 100),
+                         "Grid points over l_pz; the grid error, tied to l_pz, goes with the extrapolation. "
+                         "Units: none.");
+          entries.integer("Unloading steps", unloading_steps, 6u, 1u, 100u,
+                          "States along the unloading path at the smallest zone, the mean gap rising by "
+                          "0.1 a a step. Units: none.");
+          entries.number("Solver tolerance", solver_tolerance, 1e-9, interval("[]", 1e-14, 1e-4),
+                         "Residual of the constrained CG, in units of the rms height. Units: none.");
+          if (!entries.reading())
+            return;
+          // The periodic images are measured at 2 L: beyond 2^13 points a side
+          // a solve outgrows this verifier's memory.
+          entries.require(
+              grid_points(zones.front(), 2 * period) <= 8192 && grid_points(zones.back(), period) <= 8192,
+              "Cohesive zones l_pz/a", zones.back(), "at least Period L/a x Points per cohesive zone/8192");
+        });
+      }
+
+      unsigned int grid_points(const double zone, const double L) const
+      {
+        return static_cast<unsigned int>(std::lround(L * points_per_zone / zone));
+      }
+
+      Verdict run(const ResultFolder &results, std::ostream &log) override
+      {
+        const ContactSolverControl control{100000, solver_tolerance};
+        const double               unit = M_PI * adhesive_sphere::work_of_adhesion; // pi w R
+        Table                      pull_offs({{"l_pz/a", Table::Format{6, false}},
+                                              {"L/a", Table::Format{4, false}},
+                                              "points per period",
+                                              {"F/(pi w R)", Table::digits},
+                                              {"contact radius/a", Table::digits},
+                                              {"wall time (s)", Table::Format{3, false}}});
+        const auto                 pull_off = [&](const double zone, const double L) {
+          dealii::Timer                timer;
+          const unsigned int           n = grid_points(zone, L);
+          const adhesive_sphere::State state = adhesive_sphere::Model({zone, L, n}).pull_off(control);
+          pull_offs.add_row({zone, L, n, state.load / unit, state.contact_radius, timer.wall_time()});
+          return state.load;
+        };
+        std::vector<double> loads;
+        for (const double zone : zones)
+          loads.push_back(pull_off(zone, period));
+        // The images shift the load by ~(a/L)^3: through L, 1.5 L and 2 L at the
+        // coarsest zone, the shift to an infinite period.
+        std::vector<double> by_period = {loads.front()}, inverse_periods = {1 / period};
+        for (const double L : {1.5 * period, 2 * period})
+          {
+            by_period.push_back(pull_off(zones.front(), L));
+            inverse_periods.push_back(1 / L);
+          }
+        const Extrapolated infinite = extrapolate(inverse_periods, by_period, {3, 4});
+        const Extrapolated in_zone  = extrapolate(
+             zones, loads, zones.size() > 3 ? std::vector<double>{0.5, 1, 1.5} : std::vector<double>{0.5, 1});
+        const double value = (in_zone.value + infinite.value - loads.front()) / unit;
+        const double error = (in_zone.error + infinite.error) / unit;
+        publish(pull_offs, "jkr-sphere-pull-off.csv", results, log,
+                "The JKR sphere: pull-off load F under prescribed load at each cohesive zone (period L), "
+                "and at the coarsest zone for three periods (JKR: F = -1.5 pi w R at contact radius a)");
+
+        Table              path({{"contact radius/a", Table::digits},
+                                 {"F/(pi w R)", Table::digits},
+                                 {"JKR F(a)/(pi w R)", Table::digits},
+                                 {"relative difference", Table::error_digits}});
+        const unsigned int n = grid_points(zones.back(), period);
+        for (const auto &state :
+             adhesive_sphere::Model({zones.back(), period, n}).unloading(control, unloading_steps, 0.1))
+          {
+            const double jkr = adhesive_sphere::jkr_load(state.contact_radius);
+            path.add_row(
+                {state.contact_radius, state.load / unit, jkr / unit, std::abs(state.load / jkr - 1)});
+          }
+        publish(path, "jkr-sphere-unloading.csv", results, log,
+                "Contact radius against load along the unloading path at the smallest zone, beside JKR's "
+                "F = 4 E* a^3/(3R) - sqrt(8 pi w E* a^3)");
+
+        Table summary = Table::summary();
+        summary.add_row({"pull-off F/(pi w R), extrapolated in l_pz", in_zone.value / unit});
+        summary.add_row({"... shift of the periodic images to an infinite period",
+                         (infinite.value - loads.front()) / unit});
+        summary.add_row({"JKR-limit pull-off F/(pi w R)", Table::Cell(value, Table::all_digits)});
+        summary.add_row({"error estimate", Table::Cell(error, Table::error_digits)});
+        summary.add_row({"|F/F_JKR - 1|", Table::Cell(std::abs(value / -1.5 - 1), Table::error_digits)});
+        publish(summary, "jkr-sphere-summary.csv", results, log);
+        return verdict(std::abs(value / -1.5 - 1));
+      }
+
+      std::vector<double> zones; // l_pz/a
+      double              period, points_per_zone, solver_tolerance;
+      unsigned int        unloading_steps;
+    };
+  } // namespace
+
+  PENNY_REGISTER_SCENE(
+      JkrSphereScene, "jkr-sphere",
+      "the JKR sphere by the adhesive boundary-element solver: pull-off load extrapolated to "
+      "the JKR limit, and the contact radius against load",
+      "|F_pull-off/(-(3/2) pi w R) - 1|")
+} // namespace penny
