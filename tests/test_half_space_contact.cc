@@ -6,6 +6,7 @@
 #define BOOST_TEST_MODULE half_space_contact
 #define BOOST_TEST_NO_MAIN
 #include "closed_forms/periodic_array.h"
+#include "contact/contact_geometry.h"
 #include "contact/half_space_contact.h"
 #include "statistics/random_field.h"
 #include "statistics/roughness.h"

@@ -1,5 +1,7 @@
 #include "contact/contact_geometry.h"
 
+#include <Eigen/Dense>
+
 #include <cmath>
 #include <stdexcept>
 #include <vector>
@@ -83,5 +85,25 @@ namespace penny
         square += std::pow((inner + outer) / 2, 2);
       }
     return std::sqrt(square / n_rays);
+  }
+
+  double edge_from_gap(const std::vector<double> &gaps)
+  {
+    const int n = gaps.size();
+    if (n < 4)
+      throw std::invalid_argument("edge_from_gap: needs the gaps of at least 4 points beside the edge");
+    Eigen::MatrixXd design(n - 1, 3);
+    Eigen::VectorXd root_gap(n - 1);
+    for (int k = 2; k <= n; ++k)
+      {
+        design.row(k - 2) << 1, k, k * k;
+        root_gap(k - 2) = std::cbrt(gaps[k - 1] * gaps[k - 1]);
+      }
+    const Eigen::Vector3d c = design.colPivHouseholderQr().solve(root_gap);
+    // The root of c0 + c1 k + c2 k^2 nearest the data, by Newton from the linear part's root.
+    double k = -c(0) / c(1);
+    for (int iteration = 0; iteration < 50; ++iteration)
+      k -= (c(0) + c(1) * k + c(2) * k * k) / (c(1) + 2 * c(2) * k);
+    return k;
   }
 } // namespace penny

@@ -4,6 +4,8 @@
 
 #include "fourier/fourier_transform.h"
 
+#include <vector>
+
 namespace penny
 {
   // Connected regions of contact (g = 0) and of non-contact (g > 0) on the
@@ -29,4 +31,13 @@ namespace penny
   // std::runtime_error if a ray meets no crossing within half the period.
   double level_radius(const PeriodicGrid &grid, const GridField &f, double level, unsigned int i,
                       unsigned int j, unsigned int rays = 256);
+
+  // Where a contact edge lies between grid points, from the gaps g_1 ... g_M
+  // (M >= 4) of the first non-contact points beside it, g_k at k cells from
+  // the last contact point. Beside a smooth edge g ~ (x - a)^(3/2), so g^(2/3)
+  // is smooth and vanishes linearly at the edge: fitted by a quadratic (least
+  // squares, Eigen) over k = 2 ... M (the first point, nearest the discrete
+  // edge, is left out) and returned is its root, in cells from the last
+  // contact point.
+  double edge_from_gap(const std::vector<double> &gaps);
 } // namespace penny

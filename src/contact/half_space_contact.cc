@@ -1,13 +1,10 @@
 #include "contact/half_space_contact.h"
 
-#include <Eigen/Dense>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
 #include <numeric>
-#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -101,35 +98,6 @@ namespace penny
       return alpha;
     }
 
-    // The grid halved in each direction of more than one point, or nothing if
-    // a side would fall below 128 points or is odd.
-    std::optional<PeriodicGrid> halved(const PeriodicGrid &grid)
-    {
-      const auto halvable = [](const unsigned int n) { return n == 1 || (n % 2 == 0 && n >= 256); };
-      if (!halvable(grid.nx) || !halvable(grid.ny) || (grid.nx == 1 && grid.ny == 1))
-        return std::nullopt;
-      return PeriodicGrid{grid.nx == 1 ? 1 : grid.nx / 2, grid.ny == 1 ? 1 : grid.ny / 2, grid.lx, grid.ly};
-    }
-
-    // A gap on `fine` (twice `coarse` in each direction of more than one
-    // point) by bilinear interpolation, periodic: it stays >= 0.
-    GridField interpolated(const PeriodicGrid &coarse, const GridField &gap, const PeriodicGrid &fine)
-    {
-      const unsigned int sx = fine.nx / coarse.nx, sy = fine.ny / coarse.ny;
-      GridField          result(fine.n_points());
-      for (unsigned int i = 0; i < fine.nx; ++i)
-        for (unsigned int j = 0; j < fine.ny; ++j)
-          {
-            const unsigned int a = i / sx, b = j / sy, a1 = (a + 1) % coarse.nx, b1 = (b + 1) % coarse.ny;
-            const double       tx = double(i % sx) / sx, ty = double(j % sy) / sy;
-            const auto         at = [&](const unsigned int x, const unsigned int y) {
-              return gap[x * coarse.ny + y];
-            };
-            result[i * fine.ny + j] = (1 - tx) * ((1 - ty) * at(a, b) + ty * at(a, b1)) +
-                                      tx * ((1 - ty) * at(a1, b) + ty * at(a1, b1));
-          }
-      return result;
-    }
   } // namespace
 
   HalfSpaceContact::HalfSpaceContact(const FourierTransform &transform, GridField heights,
@@ -192,7 +160,7 @@ namespace penny
           formatted("contact solver: the mean pressure %g Pa is outside the allowed range "
                     "(0, inf) without adhesion, (-inf, inf) with it",
                     mean_pressure));
-    const std::optional<PeriodicGrid> coarse_grid = halved(transform_.grid());
+    const std::optional<PeriodicGrid> coarse_grid = halved(transform_.grid(), 128);
     if (!initial_gap.empty() || adhesion_.active() || !coarse_grid)
       {
         GridField gap = initial_gap.empty() ? GridField(heights_.size(), 0.) : initial_gap;
@@ -348,7 +316,7 @@ namespace penny
         if (residual <= solver.tolerance)
           break;
         if (iteration == solver.max_iterations)
-          throw std::runtime_error(
+          throw ContactSolverFailure(
               formatted("contact solver: no convergence in %.0f iterations (residual %.3g > tolerance %.3g)",
                         solver.max_iterations, residual, solver.tolerance));
 
@@ -451,23 +419,4 @@ namespace penny
     return steps;
   }
 
-  double edge_from_gap(const std::vector<double> &gaps)
-  {
-    const int n = gaps.size();
-    if (n < 4)
-      throw std::invalid_argument("edge_from_gap: needs the gaps of at least 4 points beside the edge");
-    Eigen::MatrixXd design(n - 1, 3);
-    Eigen::VectorXd root_gap(n - 1);
-    for (int k = 2; k <= n; ++k)
-      {
-        design.row(k - 2) << 1, k, k * k;
-        root_gap(k - 2) = std::cbrt(gaps[k - 1] * gaps[k - 1]);
-      }
-    const Eigen::Vector3d c = design.colPivHouseholderQr().solve(root_gap);
-    // The root of c0 + c1 k + c2 k^2 nearest the data, by Newton from the linear part's root.
-    double k = -c(0) / c(1);
-    for (int iteration = 0; iteration < 50; ++iteration)
-      k -= (c(0) + c(1) * k + c(2) * k * k) / (c(1) + 2 * c(2) * k);
-    return k;
-  }
 } // namespace penny

@@ -22,10 +22,17 @@
 #include "contact/adhesion.h"
 #include "contact/half_space.h"
 
+#include <stdexcept>
 #include <vector>
 
 namespace penny
 {
+  // An iteration that did not reach its tolerance within its limit.
+  struct ContactSolverFailure : std::runtime_error
+  {
+    using std::runtime_error::runtime_error;
+  };
+
   struct ContactSolverControl
   {
     unsigned int max_iterations;
@@ -71,9 +78,9 @@ namespace penny
     // direction (heights resampled, recursively while the halved grid keeps
     // 128 points a side; to a tolerance of at least 1e-4) and starts from that
     // gap interpolated: nested iteration, after which the iterations on the
-    // fine grid hardly depend on it. Throws
-    // std::runtime_error (one line) if the residual does not fall below the
-    // tolerance within max_iterations, or if the surfaces separate (p_bar
+    // fine grid hardly depend on it. Throws ContactSolverFailure (one line)
+    // if the residual does not fall below the tolerance within
+    // max_iterations, std::runtime_error if the surfaces separate (p_bar
     // beyond the pull-off load).
     ContactSolution solve(double mean_pressure, const ContactSolverControl &control,
                           const GridField &initial_gap = {}) const;
@@ -127,12 +134,4 @@ namespace penny
   std::vector<LoadStep> load_sweep(const HalfSpaceContact &contact, const std::vector<double> &mean_pressures,
                                    const ContactSolverControl &control);
 
-  // Where a contact edge lies between grid points, from the gaps g_1 ... g_M
-  // (M >= 4) of the first non-contact points beside it, g_k at k cells from
-  // the last contact point. Beside a smooth edge g ~ (x - a)^(3/2), so g^(2/3)
-  // is smooth and vanishes linearly at the edge: fitted by a quadratic (least
-  // squares, Eigen) over k = 2 ... M (the first point, nearest the discrete
-  // edge, is left out) and returned is its root, in cells from the last
-  // contact point.
-  double edge_from_gap(const std::vector<double> &gaps);
 } // namespace penny

@@ -151,4 +151,30 @@ namespace penny
     transform.apply(multiplier, field, derivative);
     return derivative;
   }
+
+  std::optional<PeriodicGrid> halved(const PeriodicGrid &grid, const unsigned int smallest)
+  {
+    const auto halvable = [=](const unsigned int n) { return n == 1 || (n % 2 == 0 && n / 2 >= smallest); };
+    if (!halvable(grid.nx) || !halvable(grid.ny) || (grid.nx == 1 && grid.ny == 1))
+      return std::nullopt;
+    return PeriodicGrid{grid.nx == 1 ? 1 : grid.nx / 2, grid.ny == 1 ? 1 : grid.ny / 2, grid.lx, grid.ly};
+  }
+
+  GridField interpolated(const PeriodicGrid &coarse, const GridField &field, const PeriodicGrid &fine)
+  {
+    const unsigned int sx = fine.nx / coarse.nx, sy = fine.ny / coarse.ny;
+    GridField          result(fine.n_points());
+    for (unsigned int i = 0; i < fine.nx; ++i)
+      for (unsigned int j = 0; j < fine.ny; ++j)
+        {
+          const unsigned int a = i / sx, b = j / sy, a1 = (a + 1) % coarse.nx, b1 = (b + 1) % coarse.ny;
+          const double       tx = double(i % sx) / sx, ty = double(j % sy) / sy;
+          const auto         at = [&](const unsigned int x, const unsigned int y) {
+            return field[x * coarse.ny + y];
+          };
+          result[i * fine.ny + j] = (1 - tx) * ((1 - ty) * at(a, b) + ty * at(a, b1)) +
+                                    tx * ((1 - ty) * at(a1, b) + ty * at(a1, b1));
+        }
+    return result;
+  }
 } // namespace penny

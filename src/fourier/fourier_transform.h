@@ -9,6 +9,7 @@
 
 #include <complex>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace penny
@@ -113,6 +114,15 @@ namespace penny
   // series, the modes the coarser of the two grids cannot hold (their Nyquist
   // modes too) dropped: exact for fields band-limited to the coarser grid.
   GridField resampled(const FourierTransform &from, const FourierTransform &to, const GridField &field);
+
+  // The grid halved in each direction of more than one point, or nothing if
+  // a side is odd or its half would have fewer than `smallest` points.
+  std::optional<PeriodicGrid> halved(const PeriodicGrid &grid, unsigned int smallest);
+
+  // A field on `fine` (twice `coarse` in each direction of more than one
+  // point) by bilinear interpolation, periodic: each value lies between
+  // those of neighbouring coarse points, so a field >= 0 stays >= 0.
+  GridField interpolated(const PeriodicGrid &coarse, const GridField &field, const PeriodicGrid &fine);
 
   // The Fourier factor of d^(ox + oy)/dx^ox dy^oy, (i qx)^ox (i qy)^oy, zero
   // on a Nyquist component of odd order (its sine part is not on the grid).

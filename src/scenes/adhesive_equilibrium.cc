@@ -18,7 +18,7 @@ namespace penny
   {
     struct AdhesiveEquilibriumScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override
       {
         input.sections(sections, &peak_tension);
         // The stable gap's search widens its bracket from c_min to at most
@@ -74,7 +74,7 @@ namespace penny
     };
   } // namespace
 
-  PENNY_REGISTER_SCENE(AdhesiveEquilibriumScene, "adhesive-equilibrium",
+  PENNY_REGISTER_SCENE(AdhesiveEquilibriumScene, "adhesive-equilibrium", "",
                        "the FE gap radius on the stable branch for the peak tension P (the paper's g)",
                        "relative error of the gap radius c_t")
 } // namespace penny

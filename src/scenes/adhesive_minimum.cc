@@ -15,7 +15,7 @@ namespace penny
   {
     struct AdhesiveMinimumScene : Scene
     {
-      void parameters(Sections &sections) override { input.sections(sections); }
+      void inputs(Sections &sections) override { input.sections(sections); }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
@@ -48,7 +48,7 @@ namespace penny
     };
   } // namespace
 
-  PENNY_REGISTER_SCENE(AdhesiveMinimumScene, "adhesive-minimum",
+  PENNY_REGISTER_SCENE(AdhesiveMinimumScene, "adhesive-minimum", "",
                        "the minimum over c of the FE peak tension P(c) at K_I = K_Ic: psi and c_min",
                        "relative error of psi")
 } // namespace penny

@@ -21,7 +21,7 @@ namespace penny
   {
     struct AreaLoadScene : Scene
     {
-      void parameters(Sections &sections) override { rough_surface_sections(sections, surface); }
+      void inputs(Sections &sections) override { rough_surface_sections(sections, surface); }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
@@ -71,7 +71,7 @@ namespace penny
     };
   } // namespace
 
-  PENNY_REGISTER_SCENE(AreaLoadScene, "area-load",
+  PENNY_REGISTER_SCENE(AreaLoadScene, "area-load", "",
                        "A_nc/A_0 and A_c/A_0 against p_bar/sqrt(V) for each H and zeta (paper Figs. 4 and 5)",
                        "")
 } // namespace penny

@@ -9,6 +9,7 @@
 // within Verification/Tolerance of 1.
 #include "contact/adhesive_bisinusoid.h"
 #include "contact/extrapolation.h"
+#include "problems/contact_solver.h"
 #include "scenes/scene.h"
 
 #include <deal.II/base/timer.h>
@@ -27,32 +28,30 @@ namespace penny
 
     struct BemBisinusoidScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override { contact_solver_section(sections, control, 1e-9); }
+
+      void entries(Entries &entries) override
       {
-        sections.subsection("BEM bi-sinusoid", [&](Entries &entries) {
-          entries.numbers("Adhesionless load ratios", load_ratios, {0.9, 0.95, 0.98, 0.99},
-                          interval("()", 0, 1), "p_bar/p* of the adhesionless loading path. Units: none.");
-          entries.integer("Adhesionless grid", adhesionless_points, 1024u, 16u, 8192u,
-                          "Points per side of the cell lambda/sqrt(2) without adhesion. Units: none.");
-          entries.decreasing_numbers("Johnson parameters alpha", alphas, {0.1, 0.03, 0.01}, 1,
-                                     interval("[]", 1e-3, 0.3),
-                                     "alpha = K_Ic/(p* sqrt(lambda)): one closure load each. Units: none.");
-          entries.decreasing_numbers(
-              "Cohesive zones l_pz/c_min", zones, {1. / 8, 1. / 16, 1. / 32}, 2, interval("[]", 1e-3, 0.125),
-              "l_pz = E* rho^2/(pi w), in units of the closing gap's radius c_min = 0.195 alpha^(2/5) "
-              "lambda; "
-              "above c_min/8 the gap shrinks to nothing without a jump. Units: c_min.");
-          entries.number("Points per cohesive zone", points_per_zone, 6,
-                         interval("[]", HalfSpaceContact::min_process_zone_points, 100),
-                         "Grid points over l_pz. Units: none.");
-          entries.number("Solver tolerance", solver_tolerance, 1e-9, interval("[]", 1e-14, 1e-4),
-                         "Residual of the constrained CG, in units of the rms height. Units: none.");
-          if (!entries.reading())
-            return;
-          // Beyond 8192 points a side a solve outgrows this verifier's memory.
-          entries.require(grid_points(alphas.back(), zones.back()) <= 8192, "Cohesive zones l_pz/c_min",
-                          zones.back(), "a grid of at most 8192 points a side at the smallest alpha");
-        });
+        entries.numbers("Adhesionless load ratios", load_ratios, {0.9, 0.95, 0.98, 0.99},
+                        interval("()", 0, 1), "p_bar/p* of the adhesionless loading path. Units: none.");
+        entries.integer("Adhesionless grid", adhesionless_points, 1024u, 16u, 8192u,
+                        "Points per side of the cell lambda/sqrt(2) without adhesion. Units: none.");
+        entries.decreasing_numbers("Johnson parameters alpha", alphas, {0.1, 0.03, 0.01}, 1,
+                                   interval("[]", 1e-3, 0.3),
+                                   "alpha = K_Ic/(p* sqrt(lambda)): one closure load each. Units: none.");
+        entries.decreasing_numbers(
+            "Cohesive zones l_pz/c_min", zones, {1. / 8, 1. / 16, 1. / 32}, 2, interval("[]", 1e-3, 0.125),
+            "l_pz = E* rho^2/(pi w), in units of the closing gap's radius c_min = 0.195 alpha^(2/5) "
+            "lambda; "
+            "above c_min/8 the gap shrinks to nothing without a jump. Units: c_min.");
+        entries.number("Points per cohesive zone", points_per_zone, 6,
+                       interval("[]", HalfSpaceContact::min_process_zone_points, 100),
+                       "Grid points over l_pz. Units: none.");
+        if (!entries.reading())
+          return;
+        // Beyond 8192 points a side a solve outgrows this verifier's memory.
+        entries.require(grid_points(alphas.back(), zones.back()) <= 8192, "Cohesive zones l_pz/c_min",
+                        zones.back(), "a grid of at most 8192 points a side at the smallest alpha");
       }
 
       // Points per side of the cell lambda/sqrt(2), a multiple of 32.
@@ -64,11 +63,10 @@ namespace penny
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        const ContactSolverControl control{100000, solver_tolerance};
-        Table                      adhesionless({{"p_bar/p*", Table::Format{4, false}},
-                                                 {"A_nc/A_0", Table::digits},
-                                                 {"(3/(2 pi))(1 - p_bar/p*)", Table::digits},
-                                                 {"ratio", Table::Format{6, false}}});
+        Table adhesionless({{"p_bar/p*", Table::Format{4, false}},
+                            {"A_nc/A_0", Table::digits},
+                            {"(3/(2 pi))(1 - p_bar/p*)", Table::digits},
+                            {"ratio", Table::Format{6, false}}});
         for (const auto &state :
              adhesive_bisinusoid::Model({0, 0, adhesionless_points}).loading(load_ratios, control))
           {
@@ -131,14 +129,15 @@ namespace penny
         return verdict(std::abs(last_ratio - 1));
       }
 
-      std::vector<double> load_ratios, alphas, zones;
-      unsigned int        adhesionless_points;
-      double              points_per_zone, solver_tolerance;
+      std::vector<double>  load_ratios, alphas, zones;
+      unsigned int         adhesionless_points;
+      double               points_per_zone;
+      ContactSolverControl control;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(
-      BemBisinusoidScene, "bem-bisinusoid",
+      BemBisinusoidScene, "bem-bisinusoid", "BEM bi-sinusoid",
       "the bi-sinusoid near full contact by the adhesive boundary-element solver: non-contact "
       "area and the gaps' closure load against the isolated penny gaps of its summits",
       "|closure load margin/(psi (2 pi)^(2/5) alpha^(4/5)) - 1| at the smallest alpha")

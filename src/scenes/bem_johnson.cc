@@ -9,6 +9,7 @@
 #include "closed_forms/periodic_array.h"
 #include "contact/adhesive_sinusoid.h"
 #include "contact/extrapolation.h"
+#include "problems/contact_solver.h"
 #include "problems/periodic_gap.h"
 #include "scenes/scene.h"
 #include "searches/periodic_searches.h"
@@ -29,36 +30,36 @@ namespace penny
 
     struct BemJohnsonScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override
       {
         periodic.sections(sections);
-        sections.subsection("BEM Johnson", [&](Entries &entries) {
-          entries.numbers("Johnson parameters alpha", alphas, {0.05, 0.2, 0.5}, interval("(]", 0, 0.56),
-                          "alpha = K_Ic/(p* sqrt(lambda)), one curve and one jump each. Units: none.");
-          entries.numbers("Contact half-widths a/lambda", ratios, {0.1, 0.15, 0.2, 0.25, 0.3},
-                          interval("[]", 0.02, 0.45), "Where p_bar/p* is tabulated. Units: lambda.");
-          entries.decreasing_numbers(
-              "Cohesive zones l_pz/lambda", zones, {1e-3, 5e-4, 2.5e-4, 1.25e-4}, 2,
-              interval("[]", 1e-6, 0.05),
-              "l_pz = E* rho^2/(pi w) of the exponential law, extrapolated to 0 through the finest four "
-              "(exponents 1, 1.5, 2; the jump 2, 2.5, 3). Units: lambda.");
-          entries.numbers("Points per cohesive zone", points_per_zone, {16, 32},
-                          interval("[]", HalfSpaceContact::min_process_zone_points, 1000),
-                          "One value, or two increasing for an extrapolation in the grid spacing "
-                          "(exponent 2); the grid is the next power of two above points/(l_pz/lambda). "
-                          "Units: none.");
-          entries.number("Solver tolerance", solver_tolerance, 1e-11, interval("[]", 1e-14, 1e-4),
-                         "Residual of the constrained CG, in units of the rms height. Units: none.");
-          if (!entries.reading())
-            return;
-          entries.require(points_per_zone.size() <= 2 &&
-                              (points_per_zone.size() == 1 || points_per_zone[1] > points_per_zone[0]),
-                          "Points per cohesive zone", points_per_zone.back(), "one value, or two increasing");
-          // Beyond 2^22 points a solve outgrows this verifier's memory and time.
-          entries.require(grid_points(zones.back(), points_per_zone.back()) <= (1u << 22),
-                          "Points per cohesive zone", points_per_zone.back(),
-                          "at most 2^22 points per wavelength over the smallest zone");
-        });
+        contact_solver_section(sections, control, 1e-11);
+      }
+
+      void entries(Entries &entries) override
+      {
+        entries.numbers("Johnson parameters alpha", alphas, {0.05, 0.2, 0.5}, interval("(]", 0, 0.56),
+                        "alpha = K_Ic/(p* sqrt(lambda)), one curve and one jump each. Units: none.");
+        entries.numbers("Contact half-widths a/lambda", ratios, {0.1, 0.15, 0.2, 0.25, 0.3},
+                        interval("[]", 0.02, 0.45), "Where p_bar/p* is tabulated. Units: lambda.");
+        entries.decreasing_numbers(
+            "Cohesive zones l_pz/lambda", zones, {1e-3, 5e-4, 2.5e-4, 1.25e-4}, 2, interval("[]", 1e-6, 0.05),
+            "l_pz = E* rho^2/(pi w) of the exponential law, extrapolated to 0 through the finest four "
+            "(exponents 1, 1.5, 2; the jump 2, 2.5, 3). Units: lambda.");
+        entries.numbers("Points per cohesive zone", points_per_zone, {16, 32},
+                        interval("[]", HalfSpaceContact::min_process_zone_points, 1000),
+                        "One value, or two increasing for an extrapolation in the grid spacing "
+                        "(exponent 2); the grid is the next power of two above points/(l_pz/lambda). "
+                        "Units: none.");
+        if (!entries.reading())
+          return;
+        entries.require(points_per_zone.size() <= 2 &&
+                            (points_per_zone.size() == 1 || points_per_zone[1] > points_per_zone[0]),
+                        "Points per cohesive zone", points_per_zone.back(), "one value, or two increasing");
+        // Beyond 2^22 points a solve outgrows this verifier's memory and time.
+        entries.require(grid_points(zones.back(), points_per_zone.back()) <= (1u << 22),
+                        "Points per cohesive zone", points_per_zone.back(),
+                        "at most 2^22 points per wavelength over the smallest zone");
       }
 
       static unsigned int grid_points(const double zone, const double points)
@@ -85,10 +86,9 @@ namespace penny
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        const ContactSolverControl control{1000000, solver_tolerance};
-        PeriodicGapSearch          search(periodic);
-        const double               lambda = periodic.model.wavelength;
-        std::vector<double>        half_widths;
+        PeriodicGapSearch   search(periodic);
+        const double        lambda = periodic.model.wavelength;
+        std::vector<double> half_widths;
         for (const double ratio : ratios)
           half_widths.push_back((0.5 - ratio) * lambda);
         const std::vector<SinusoidUnitSifs> sifs = search.gaps.unit_load_sifs(half_widths, MPI_COMM_WORLD);
@@ -160,13 +160,13 @@ namespace penny
         return verdict(worst);
       }
 
-      PeriodicGapInput    periodic;
-      std::vector<double> alphas, ratios, zones, points_per_zone;
-      double              solver_tolerance;
+      PeriodicGapInput     periodic;
+      std::vector<double>  alphas, ratios, zones, points_per_zone;
+      ContactSolverControl control;
     };
   } // namespace
 
-  PENNY_REGISTER_SCENE(BemJohnsonScene, "bem-johnson",
+  PENNY_REGISTER_SCENE(BemJohnsonScene, "bem-johnson", "BEM Johnson",
                        "Johnson's adhesive sinusoid by the adhesive boundary-element solver, extrapolated to "
                        "the JKR limit, against Johnson's closed form and the FE periodic gap",
                        "largest |p_bar/p* BEM (JKR limit) - Johnson|")

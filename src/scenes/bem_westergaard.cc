@@ -5,8 +5,10 @@
 // errors. PASS when the half-width on the finest grid lies within
 // 'Half-width tolerance' of Westergaard's.
 #include "closed_forms/periodic_array.h"
+#include "contact/contact_geometry.h"
 #include "contact/half_space_contact.h"
 #include "output/table.h"
+#include "problems/contact_solver.h"
 #include "problems/solid.h"
 #include "scenes/scene.h"
 
@@ -37,32 +39,33 @@ namespace penny
 
     struct BemWestergaardScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override
       {
         material_section(sections, material);
-        sections.subsection("BEM Westergaard", [&](Entries &entries) {
-          entries.number("Wavelength lambda", wavelength, 1e-3, magnitude("m"),
-                         "Period of the sinusoid. Units: m.");
-          entries.number("Amplitude h0", amplitude, 1e-6, magnitude("m"),
-                         "h = 2 h0 sin^2(pi x/lambda); p* = pi E* h0/lambda. Units: m.");
-          std::vector<double> sizes;
-          entries.numbers(
-              "Grid sizes", sizes, {64, 128, 256, 512, 1024}, interval("[]", 16, 1 << 20),
-              "Grid points per wavelength, even and increasing (the grid is N x 4, the surface does not "
-              "depend on y). Units: none.");
-          grid_sizes.assign(sizes.begin(), sizes.end());
-          for (std::size_t k = 0; k < sizes.size(); ++k)
-            entries.require(sizes[k] == grid_sizes[k] && grid_sizes[k] % 2 == 0 &&
-                                (k == 0 || grid_sizes[k] > grid_sizes[k - 1]),
-                            "Grid sizes", sizes[k], "even whole numbers, increasing");
-          entries.numbers("Load ratios", load_ratios, {0.2, 0.5, 0.8}, interval("()", 0, 1),
-                          "p_bar/p* of the solves. Units: none.");
-          entries.number("Solver tolerance", solver_tolerance, 1e-12, above(0),
-                         "Residual of the constrained CG, in units of the rms height. Units: none.");
-          entries.number(
-              "Half-width tolerance", half_width_tolerance, 1e-3, above(0),
-              "The verdict: |a - a_Westergaard|/lambda at the finest grid, every load. Units: none.");
-        });
+        contact_solver_section(sections, control, 1e-12);
+      }
+
+      void entries(Entries &entries) override
+      {
+        entries.number("Wavelength lambda", wavelength, 1e-3, magnitude("m"),
+                       "Period of the sinusoid. Units: m.");
+        entries.number("Amplitude h0", amplitude, 1e-6, magnitude("m"),
+                       "h = 2 h0 sin^2(pi x/lambda); p* = pi E* h0/lambda. Units: m.");
+        std::vector<double> sizes;
+        entries.numbers(
+            "Grid sizes", sizes, {64, 128, 256, 512, 1024}, interval("[]", 16, 1 << 20),
+            "Grid points per wavelength, even and increasing (the grid is N x 4, the surface does not "
+            "depend on y). Units: none.");
+        grid_sizes.assign(sizes.begin(), sizes.end());
+        for (std::size_t k = 0; k < sizes.size(); ++k)
+          entries.require(sizes[k] == grid_sizes[k] && grid_sizes[k] % 2 == 0 &&
+                              (k == 0 || grid_sizes[k] > grid_sizes[k - 1]),
+                          "Grid sizes", sizes[k], "even whole numbers, increasing");
+        entries.numbers("Load ratios", load_ratios, {0.2, 0.5, 0.8}, interval("()", 0, 1),
+                        "p_bar/p* of the solves. Units: none.");
+        entries.number(
+            "Half-width tolerance", half_width_tolerance, 1e-3, above(0),
+            "The verdict: |a - a_Westergaard|/lambda at the finest grid, every load. Units: none.");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
@@ -98,8 +101,7 @@ namespace penny
               {
                 const double          ratio = bem.load_ratios[l];
                 dealii::Timer         timer;
-                const ContactSolution solution =
-                    contact.solve(ratio * p_star, {100000, bem.solver_tolerance});
+                const ContactSolution solution = contact.solve(ratio * p_star, control);
                 // The strip is centred on the crest x = lambda/2 (i = n/2); its
                 // edge lies between the last contact point and the gap beside it.
                 unsigned int last = n / 2;
@@ -159,13 +161,13 @@ namespace penny
       double                    wavelength, amplitude; // lambda (m), h0 (m) of h = 2 h0 sin^2(pi x/lambda)
       std::vector<unsigned int> grid_sizes;            // points per wavelength
       std::vector<double>       load_ratios;           // p_bar/p*
-      double                    solver_tolerance;
+      ContactSolverControl      control;
       double                    half_width_tolerance; // of a/lambda at the finest grid
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(
-      BemWestergaardScene, "bem-westergaard",
+      BemWestergaardScene, "bem-westergaard", "BEM Westergaard",
       "the FFT boundary-element contact solver on Westergaard's sinusoid: half-width and pressure against "
       "grid size",
       "")

@@ -108,39 +108,40 @@ namespace penny
 
     struct ConvergenceScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override
       {
         gap.sections(sections, &load);
-        sections.subsection("Convergence", [&](Entries &entries) {
-          entries.choice(
-              "Strategy", sequence.strategy, Strategy::tip_grading,
-              EnumNames<Strategy>{{"uniform-h", Strategy::uniform_h},
-                                  {"tip-grading", Strategy::tip_grading},
-                                  {"degree", Strategy::degree},
-                                  {"domain-size", Strategy::domain_size},
-                                  {"adaptive", Strategy::adaptive}},
-              "The sequence of the convergence scene: uniform-h, one more global refinement per cycle of "
-              "the scene's mesh; tip-grading, 'Tip levels step' more tip levels per cycle from 'First tip "
-              "levels'; degree, degree 1 to 4 on the scene's mesh; domain-size, R/c = H/c from 10 to 1e4 "
-              "at the scene's near-tip mesh; adaptive, from the mesh with 'First tip levels', each cycle "
-              "refines the 'Refined fraction' of cells with the largest Kelly error indicators of the "
-              "displacement.");
-          entries.integer("Cycles", sequence.cycles, 4u, 1u, 30u, "Number of discretisations. Units: none.");
-          entries.integer("First tip levels", sequence.first_tip_levels, 4u, 0u, 40u,
-                          "tip-grading and adaptive: levels of cycle 0. Units: none.");
-          entries.integer("Tip levels step", sequence.tip_levels_step, 4u, 1u, 20u,
-                          "tip-grading: levels added per cycle. Units: none.");
-          entries.number("Refined fraction", sequence.refined_fraction, 0.1, interval("(]", 0, 1),
-                         "adaptive: share of the cells, those with the largest Kelly indicators, refined "
-                         "per cycle. Units: none.");
-          if (sequence.strategy == Strategy::degree)
-            entries.require(sequence.cycles <= 4, "Cycles", sequence.cycles, "[1, 4] for Strategy = degree");
-          if (sequence.strategy == Strategy::tip_grading)
-            entries.require(sequence.first_tip_levels + (sequence.cycles - 1) * sequence.tip_levels_step <=
-                                40,
-                            "Cycles", sequence.cycles, "[1, 1 + (40 - First tip levels)/Tip levels step]");
-        });
         sections.check([&] { check_cycle_sizes(); });
+      }
+
+      void entries(Entries &entries) override
+      {
+        entries.choice(
+            "Strategy", sequence.strategy, Strategy::tip_grading,
+            EnumNames<Strategy>{{"uniform-h", Strategy::uniform_h},
+                                {"tip-grading", Strategy::tip_grading},
+                                {"degree", Strategy::degree},
+                                {"domain-size", Strategy::domain_size},
+                                {"adaptive", Strategy::adaptive}},
+            "The sequence of the convergence scene: uniform-h, one more global refinement per cycle of "
+            "the scene's mesh; tip-grading, 'Tip levels step' more tip levels per cycle from 'First tip "
+            "levels'; degree, degree 1 to 4 on the scene's mesh; domain-size, R/c = H/c from 10 to 1e4 "
+            "at the scene's near-tip mesh; adaptive, from the mesh with 'First tip levels', each cycle "
+            "refines the 'Refined fraction' of cells with the largest Kelly error indicators of the "
+            "displacement.");
+        entries.integer("Cycles", sequence.cycles, 4u, 1u, 30u, "Number of discretisations. Units: none.");
+        entries.integer("First tip levels", sequence.first_tip_levels, 4u, 0u, 40u,
+                        "tip-grading and adaptive: levels of cycle 0. Units: none.");
+        entries.integer("Tip levels step", sequence.tip_levels_step, 4u, 1u, 20u,
+                        "tip-grading: levels added per cycle. Units: none.");
+        entries.number("Refined fraction", sequence.refined_fraction, 0.1, interval("(]", 0, 1),
+                       "adaptive: share of the cells, those with the largest Kelly indicators, refined "
+                       "per cycle. Units: none.");
+        if (sequence.strategy == Strategy::degree)
+          entries.require(sequence.cycles <= 4, "Cycles", sequence.cycles, "[1, 4] for Strategy = degree");
+        if (sequence.strategy == Strategy::tip_grading)
+          entries.require(sequence.first_tip_levels + (sequence.cycles - 1) * sequence.tip_levels_step <= 40,
+                          "Cycles", sequence.cycles, "[1, 1 + (40 - First tip levels)/Tip levels step]");
       }
 
       // Every model lives on one rank, so each wall time is that of one core
@@ -318,6 +319,6 @@ namespace penny
     };
   } // namespace
 
-  PENNY_REGISTER_SCENE(ConvergenceScene, "convergence",
+  PENNY_REGISTER_SCENE(ConvergenceScene, "convergence", "Convergence",
                        "the penny-gap solve over the sequence of discretisations in 'Convergence'", "")
 } // namespace penny

@@ -93,7 +93,7 @@ namespace penny
     }
     struct EllipticalGapScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override
       {
         elliptical_model_sections(sections, model);
         elliptical_gap_section(sections, gap);
@@ -123,7 +123,7 @@ namespace penny
   } // namespace
 
   PENNY_REGISTER_SCENE(
-      EllipticalGapScene, "elliptical-gap",
+      EllipticalGapScene, "elliptical-gap", "",
       "one 3D FE solve (distributed) of an elliptical gap under uniform pressure: K_I(phi) at the front "
       "points from front-localised J-integrals (signed), beside the Green-Sneddon/Irwin closed form",
       "largest relative error of K_I over the front points and rings")

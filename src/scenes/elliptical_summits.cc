@@ -136,22 +136,9 @@ namespace penny
     }
     struct EllipticalSummitsScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override
       {
         elliptical_model_sections(sections, model);
-        sections.subsection("Elliptical summits", [&](Entries &entries) {
-          entries.numbers(
-              "Tension aspect ratios Ay/Ax", tension_aspect_ratios, {1, 0.8, 0.5, 0.25},
-              interval("[]", 0.05, 1),
-              "Summits t = P (1 - x^2/Ax^2 - y^2/Ay^2) of principal radii R_1 = Ax^2/(2 P) and R_2 = "
-              "Ay^2/(2 P); for each, the gaps are searched with and without adhesion. Slender summits need "
-              "slender gap models (b/a about 0.14 for Ay/Ax = 0.1, where CG with AMG stalls on the default "
-              "meshes). Units: none.");
-          entries.integer(
-              "Front points", front_points, 9u, 2u, 1000u,
-              "K_I along the front of each gap found, at phi = i pi/(2 (n - 1)), i = 0 ... n - 1. Units: "
-              "none.");
-        });
         // The coarse model halves the cells along and around the front.
         const auto &mesh = model.model.mesh;
         sections.require(mesh.cells_along_front % 4 == 0, "Elliptical model/Cells along front",
@@ -165,6 +152,21 @@ namespace penny
             "Elliptical model/Front weight half-width", model.weight_half_width,
             "(0, Cells along front x 2^Global refinements/2] for this scene (its coarse model halves the "
             "cells)");
+      }
+
+      void entries(Entries &entries) override
+      {
+        entries.numbers(
+            "Tension aspect ratios Ay/Ax", tension_aspect_ratios, {1, 0.8, 0.5, 0.25},
+            interval("[]", 0.05, 1),
+            "Summits t = P (1 - x^2/Ax^2 - y^2/Ay^2) of principal radii R_1 = Ax^2/(2 P) and R_2 = "
+            "Ay^2/(2 P); for each, the gaps are searched with and without adhesion. Slender summits need "
+            "slender gap models (b/a about 0.14 for Ay/Ax = 0.1, where CG with AMG stalls on the default "
+            "meshes). Units: none.");
+        entries.integer(
+            "Front points", front_points, 9u, 2u, 1000u,
+            "K_I along the front of each gap found, at phi = i pi/(2 (n - 1)), i = 0 ... n - 1. Units: "
+            "none.");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
@@ -268,7 +270,7 @@ namespace penny
   } // namespace
 
   PENNY_REGISTER_SCENE(
-      EllipticalSummitsScene, "elliptical-summits",
+      EllipticalSummitsScene, "elliptical-summits", "Elliptical summits",
       "3D FE searches (distributed) for the gaps of summits P (1 - x^2/Ax^2 - y^2/Ay^2): without adhesion "
       "K_I = 0, with adhesion K_I = K_Ic at the ends of the front at the least P (psi), beside Galin's "
       "closed form",

@@ -23,20 +23,22 @@ namespace penny
   {
     struct FeGapAreaScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override
       {
         input.sections(sections);
         area_load_section(sections, area_load);
-        sections.subsection("FE gap area", [&](Entries &entries) {
-          entries.number(
-              "p0/sqrt(V)", adhesion_ratio, 1, above(0),
-              "Adhesion of the gap population; sqrt(V) = p0/this, with p0 from Load/Summit radius R_p and "
-              "the Adhesion section. Units: none.");
-          entries.integer(
-              "Tabulated tensions", n_tabulated_tensions, 20u, 3u, 200u,
-              "FE gap radii at this many peak tensions P = p0 + t^2 sqrt(V), Chebyshev points in t. Units: "
-              "none.");
-        });
+      }
+
+      void entries(Entries &entries) override
+      {
+        entries.number(
+            "p0/sqrt(V)", adhesion_ratio, 1, above(0),
+            "Adhesion of the gap population; sqrt(V) = p0/this, with p0 from Load/Summit radius R_p and "
+            "the Adhesion section. Units: none.");
+        entries.integer(
+            "Tabulated tensions", n_tabulated_tensions, 20u, 3u, 200u,
+            "FE gap radii at this many peak tensions P = p0 + t^2 sqrt(V), Chebyshev points in t. Units: "
+            "none.");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
@@ -121,7 +123,7 @@ namespace penny
     };
   } // namespace
 
-  PENNY_REGISTER_SCENE(FeGapAreaScene, "fe-gap-area",
+  PENNY_REGISTER_SCENE(FeGapAreaScene, "fe-gap-area", "FE gap area",
                        "the area-load curve with the FE gap function g beside the closed-form g's",
                        "largest |A_nc(FE g)/A_nc(closed-form g) - 1|")
 } // namespace penny

@@ -13,7 +13,7 @@ namespace penny
   {
     struct GapSizeScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override
       {
         gap.sections(sections);
         parabola_section(sections, load);
@@ -42,7 +42,7 @@ namespace penny
     };
   } // namespace
 
-  PENNY_REGISTER_SCENE(GapSizeScene, "gap-size-adhesionless",
+  PENNY_REGISTER_SCENE(GapSizeScene, "gap-size-adhesionless", "",
                        "the gap radius where the FE K_I of the parabola (P, a) vanishes: c/a = sqrt(3/2)",
                        "relative error of c/a")
 } // namespace penny

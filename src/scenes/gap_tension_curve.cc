@@ -17,13 +17,12 @@ namespace penny
   {
     struct GapTensionCurveScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override { input.sections(sections); }
+
+      void entries(Entries &entries) override
       {
-        input.sections(sections);
-        sections.subsection("Gap-tension curve", [&](Entries &entries) {
-          entries.sweep("c_hat", "Number of points", c_hats, {0.3, 4, 24}, 2, 1000, above(0),
-                        "The range of the curve, c/c_min. Units: none.");
-        });
+        entries.sweep("c_hat", "Number of points", c_hats, {0.3, 4, 24}, 2, 1000, above(0),
+                      "The range of the curve, c/c_min. Units: none.");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
@@ -68,7 +67,7 @@ namespace penny
     };
   } // namespace
 
-  PENNY_REGISTER_SCENE(GapTensionCurveScene, "gap-tension-curve",
+  PENNY_REGISTER_SCENE(GapTensionCurveScene, "gap-tension-curve", "Gap-tension curve",
                        "p_hat(c_hat) from FE beside (c_hat^2 + 4/sqrt(c_hat))/5 (paper Fig. 2)",
                        "largest relative error of p_hat")
 } // namespace penny

@@ -7,6 +7,7 @@
 // relative.
 #include "contact/adhesive_sphere.h"
 #include "contact/extrapolation.h"
+#include "problems/contact_solver.h"
 #include "scenes/scene.h"
 
 #include <deal.II/base/timer.h>
@@ -19,33 +20,31 @@ namespace penny
   {
     struct JkrSphereScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override { contact_solver_section(sections, control, 1e-9); }
+
+      void entries(Entries &entries) override
       {
-        sections.subsection("JKR sphere", [&](Entries &entries) {
-          entries.decreasing_numbers(
-              "Cohesive zones l_pz/a", zones, {0.1, 0.05, 0.025, 0.0125, 0.00625}, 3, interval("[]", 1e-4, 1),
-              "l_pz = E* rho^2/(pi w), in units of JKR's contact radius at pull-off a; the pull-off is "
-              "extrapolated to 0 through the finest four (exponents 1/2, 1, 3/2: the cohesive zone's force "
-              "outside the contact falls like l_pz^(1/2)). Units: a.");
-          entries.number("Period L/a", period, 6, interval("[]", 4.5, 100),
-                         "The side of the periodic cell, one sphere each. Units: a.");
-          entries.number("Points per cohesive zone", points_per_zone, 4,
-                         interval("[]", HalfSpaceContact::min_process_zone_points, 100),
-                         "Grid points over l_pz; the grid error, tied to l_pz, goes with the extrapolation. "
-                         "Units: none.");
-          entries.integer("Unloading steps", unloading_steps, 6u, 1u, 100u,
-                          "States along the unloading path at the smallest zone, the mean gap rising by "
-                          "0.1 a a step. Units: none.");
-          entries.number("Solver tolerance", solver_tolerance, 1e-9, interval("[]", 1e-14, 1e-4),
-                         "Residual of the constrained CG, in units of the rms height. Units: none.");
-          if (!entries.reading())
-            return;
-          // The periodic images are measured at 2 L: beyond 2^13 points a side
-          // a solve outgrows this verifier's memory.
-          entries.require(
-              grid_points(zones.front(), 2 * period) <= 8192 && grid_points(zones.back(), period) <= 8192,
-              "Cohesive zones l_pz/a", zones.back(), "at least Period L/a x Points per cohesive zone/8192");
-        });
+        entries.decreasing_numbers(
+            "Cohesive zones l_pz/a", zones, {0.1, 0.05, 0.025, 0.0125, 0.00625}, 3, interval("[]", 1e-4, 1),
+            "l_pz = E* rho^2/(pi w), in units of JKR's contact radius at pull-off a; the pull-off is "
+            "extrapolated to 0 through the finest four (exponents 1/2, 1, 3/2: the cohesive zone's force "
+            "outside the contact falls like l_pz^(1/2)). Units: a.");
+        entries.number("Period L/a", period, 6, interval("[]", 4.5, 100),
+                       "The side of the periodic cell, one sphere each. Units: a.");
+        entries.number("Points per cohesive zone", points_per_zone, 4,
+                       interval("[]", HalfSpaceContact::min_process_zone_points, 100),
+                       "Grid points over l_pz; the grid error, tied to l_pz, goes with the extrapolation. "
+                       "Units: none.");
+        entries.integer("Unloading steps", unloading_steps, 6u, 1u, 100u,
+                        "States along the unloading path at the smallest zone, the mean gap rising by "
+                        "0.1 a a step. Units: none.");
+        if (!entries.reading())
+          return;
+        // The periodic images are measured at 2 L: beyond 2^13 points a side
+        // a solve outgrows this verifier's memory.
+        entries.require(
+            grid_points(zones.front(), 2 * period) <= 8192 && grid_points(zones.back(), period) <= 8192,
+            "Cohesive zones l_pz/a", zones.back(), "at least Period L/a x Points per cohesive zone/8192");
       }
 
       unsigned int grid_points(const double zone, const double L) const
@@ -55,17 +54,16 @@ namespace penny
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        const ContactSolverControl control{100000, solver_tolerance};
-        const double               unit = M_PI * adhesive_sphere::work_of_adhesion; // pi w R
-        Table                      pull_offs({{"l_pz/a", Table::Format{6, false}},
-                                              {"L/a", Table::Format{4, false}},
-                                              "points per period",
-                                              {"F/(pi w R)", Table::digits},
-                                              {"contact radius/a", Table::digits},
-                                              {"wall time (s)", Table::Format{3, false}}});
-        const auto                 pull_off = [&](const double zone, const double L) {
+        const double unit = M_PI * adhesive_sphere::work_of_adhesion; // pi w R
+        Table        pull_offs({{"l_pz/a", Table::Format{6, false}},
+                                {"L/a", Table::Format{4, false}},
+                                "points per period",
+                                {"F/(pi w R)", Table::digits},
+                                {"contact radius/a", Table::digits},
+                                {"wall time (s)", Table::Format{3, false}}});
+        const auto   pull_off = [&](const double zone, const double L) {
           dealii::Timer                timer;
-          const unsigned int           n = grid_points(zone, L);
+          const unsigned int           n     = grid_points(zone, L);
           const adhesive_sphere::State state = adhesive_sphere::Model({zone, L, n}).pull_off(control);
           pull_offs.add_row({zone, L, n, state.load / unit, state.contact_radius, timer.wall_time()});
           return state.load;
@@ -117,14 +115,15 @@ namespace penny
         return verdict(std::abs(value / -1.5 - 1));
       }
 
-      std::vector<double> zones; // l_pz/a
-      double              period, points_per_zone, solver_tolerance;
-      unsigned int        unloading_steps;
+      std::vector<double>  zones; // l_pz/a
+      double               period, points_per_zone;
+      ContactSolverControl control;
+      unsigned int         unloading_steps;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(
-      JkrSphereScene, "jkr-sphere",
+      JkrSphereScene, "jkr-sphere", "JKR sphere",
       "the JKR sphere by the adhesive boundary-element solver: pull-off load extrapolated to "
       "the JKR limit, and the contact radius against load",
       "|F_pull-off/(-(3/2) pi w R) - 1|")

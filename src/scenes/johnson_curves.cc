@@ -21,18 +21,17 @@ namespace penny
 
     struct JohnsonCurvesScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override { periodic.sections(sections); }
+
+      void entries(Entries &entries) override
       {
-        periodic.sections(sections);
-        sections.subsection("Johnson curves", [&](Entries &entries) {
-          entries.numbers("Johnson parameters alpha", alphas, {0, 0.2, 0.4, 0.6}, at_least(0),
-                          "alpha = K_Ic/(p* sqrt(lambda)), one curve each (Johnson's alpha^2 = 2 lambda "
-                          "dgamma/(pi^2 E* h^2)). Units: none.");
-          entries.integer(
-              "Number of points", n_points, 24u, 1u, 1000u,
-              "Contact half-widths a/lambda = i/(2 (n + 1)), i = 1 ... n; each is one FE solve of the two "
-              "unit loads, shared by every alpha. Units: none.");
-        });
+        entries.numbers("Johnson parameters alpha", alphas, {0, 0.2, 0.4, 0.6}, at_least(0),
+                        "alpha = K_Ic/(p* sqrt(lambda)), one curve each (Johnson's alpha^2 = 2 lambda "
+                        "dgamma/(pi^2 E* h^2)). Units: none.");
+        entries.integer(
+            "Number of points", n_points, 24u, 1u, 1000u,
+            "Contact half-widths a/lambda = i/(2 (n + 1)), i = 1 ... n; each is one FE solve of the two "
+            "unit loads, shared by every alpha. Units: none.");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
@@ -115,7 +114,7 @@ namespace penny
   } // namespace
 
   PENNY_REGISTER_SCENE(
-      JohnsonCurvesScene, "johnson-curves",
+      JohnsonCurvesScene, "johnson-curves", "Johnson curves",
       "Johnson's adhesive curves p_bar/p*(a/lambda) from FE roots of K_I = K_Ic beside the closed form "
       "(paper Fig. 1 from FE)",
       "largest |p_bar/p* FE - Johnson|")

@@ -23,16 +23,15 @@ namespace penny
 
     struct JumpIntoContactScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override { periodic.sections(sections); }
+
+      void entries(Entries &entries) override
       {
-        periodic.sections(sections);
-        sections.subsection("Jump into contact", [&](Entries &entries) {
-          // Above 0.56 the maximum leaves the search interval.
-          entries.sweep("alpha", "Number of alphas", alphas, {1e-4, 0.5, 9, true}, 1, 1000,
-                        interval("[]", 1e-8, 0.56),
-                        "The range of alpha = K_Ic/(p* sqrt(lambda)); each alpha is one FE maximisation over "
-                        "the contact half-width. Units: none.");
-        });
+        // Above 0.56 the maximum leaves the search interval.
+        entries.sweep("alpha", "Number of alphas", alphas, {1e-4, 0.5, 9, true}, 1, 1000,
+                      interval("[]", 1e-8, 0.56),
+                      "The range of alpha = K_Ic/(p* sqrt(lambda)); each alpha is one FE maximisation over "
+                      "the contact half-width. Units: none.");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
@@ -100,7 +99,7 @@ namespace penny
     };
   } // namespace
 
-  PENNY_REGISTER_SCENE(JumpIntoContactScene, "jump-into-contact",
+  PENNY_REGISTER_SCENE(JumpIntoContactScene, "jump-into-contact", "Jump into contact",
                        "from FE: the critical alpha of spontaneous full contact at zero load, and the "
                        "jump-into-contact load 1 - p_bar_max/p* against alpha beside 5 (alpha/4)^(4/5)",
                        "largest of the relative error of alpha_c and the error of 1 - p_bar_max/p*")

@@ -21,19 +21,18 @@ namespace penny
   {
     struct MagnificationScalingScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override { area_load_section(sections, area_load); }
+
+      void entries(Entries &entries) override
       {
-        area_load_section(sections, area_load);
-        sections.subsection("Magnification scaling", [&](Entries &entries) {
-          // Beyond 1e30 the spectral moments leave the range of a double.
-          entries.numbers(
-              "Fit magnifications", fit, {1e12, 1e16}, interval("(]", 1, 1e30),
-              "The zeta range of the least-squares fit of theta: two numbers, increasing. Units: none.");
-          if (!entries.reading())
-            return;
-          entries.require(fit.size() == 2, "Fit magnifications", fit.size(), "two numbers");
-          entries.require(fit[1] > fit[0], "Fit magnifications", fit[1], "(first, 1e30]");
-        });
+        // Beyond 1e30 the spectral moments leave the range of a double.
+        entries.numbers(
+            "Fit magnifications", fit, {1e12, 1e16}, interval("(]", 1, 1e30),
+            "The zeta range of the least-squares fit of theta: two numbers, increasing. Units: none.");
+        if (!entries.reading())
+          return;
+        entries.require(fit.size() == 2, "Fit magnifications", fit.size(), "two numbers");
+        entries.require(fit[1] > fit[0], "Fit magnifications", fit[1], "(first, 1e30]");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
@@ -68,6 +67,6 @@ namespace penny
     };
   } // namespace
 
-  PENNY_REGISTER_SCENE(MagnificationScalingScene, "magnification-scaling",
+  PENNY_REGISTER_SCENE(MagnificationScalingScene, "magnification-scaling", "Magnification scaling",
                        "theta of p0/sqrt(V) ~ zeta^theta fitted from the moments, for each H", "")
 } // namespace penny

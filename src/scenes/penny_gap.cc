@@ -82,7 +82,7 @@ namespace penny
 
     struct PennyGapScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override
       {
         gap.sections(sections, &load);
         fields_section(sections, write_fields);
@@ -112,7 +112,7 @@ namespace penny
   } // namespace
 
   PENNY_REGISTER_SCENE(
-      PennyGapScene, "penny-gap",
+      PennyGapScene, "penny-gap", "",
       "one FE solve of the Load; K_I from J-integrals (and the signed K_I) on every ring, the face opening "
       "and the gap volume, beside Sneddon's closed forms",
       "largest relative error of K_I, w(0) and the volume")

@@ -22,7 +22,7 @@ namespace penny
 
     struct PeriodicGapScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override
       {
         periodic.sections(sections);
         gap_and_load_section(sections, gap);
@@ -78,7 +78,7 @@ namespace penny
   } // namespace
 
   PENNY_REGISTER_SCENE(
-      PeriodicGapScene, "periodic-gap",
+      PeriodicGapScene, "periodic-gap", "",
       "one FE solve of a gap of the sinusoid's periodic array (plane strain): K_I from J-integrals and the "
       "signed K_I on every ring, beside sqrt(lambda) [p* cos^2(pi c/lambda) - p_bar] sqrt(tan(pi c/lambda))",
       "largest relative error of |K_I| and the signed K_I on every ring")

@@ -19,23 +19,25 @@ namespace penny
 
     struct PeriodicGapDepthScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override
       {
         periodic.sections(sections);
         gap_and_load_section(sections, gap);
-        sections.subsection("Depth study", [&](Entries &entries) {
-          entries.numbers(
-              "Depths", depths, {0.25, 0.5, 0.75, 1, 1.5, 2, 3}, interval("(]", 0, 100, "lambda"),
-              "Depths D of the truncated solid, one solve each, in place of 'Periodic gap/Depth D'. Units: "
-              "lambda.");
-          if (!entries.reading())
-            return;
+        sections.check([&] {
           const double largest_ring =
               *std::max_element(periodic.ring_radii.begin(), periodic.ring_radii.end());
           for (const double depth : depths)
-            entries.require(largest_ring < 4 * depth, "Depths", depth,
-                            "(largest ring radius/4 = " + shortest(largest_ring / 4) + ", 100] lambda");
+            sections.require(largest_ring < 4 * depth, "Depth study/Depths", depth,
+                             "(largest ring radius/4 = " + shortest(largest_ring / 4) + ", 100] lambda");
         });
+      }
+
+      void entries(Entries &entries) override
+      {
+        entries.numbers(
+            "Depths", depths, {0.25, 0.5, 0.75, 1, 1.5, 2, 3}, interval("(]", 0, 100, "lambda"),
+            "Depths D of the truncated solid, one solve each, in place of 'Periodic gap/Depth D'. Units: "
+            "lambda.");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
@@ -93,6 +95,6 @@ namespace penny
   } // namespace
 
   PENNY_REGISTER_SCENE(
-      PeriodicGapDepthScene, "periodic-gap-depth",
+      PeriodicGapDepthScene, "periodic-gap-depth", "Depth study",
       "the periodic-gap K_I against the depth D/lambda of the truncated solid: the truncation study", "")
 } // namespace penny

@@ -5,6 +5,7 @@
 #include "contact/half_space_contact.h"
 #include "output/table.h"
 #include "parallel/spread_over_ranks.h"
+#include "problems/contact_solver.h"
 #include "problems/random_surfaces.h"
 #include "problems/rough_surface.h"
 #include "problems/solid.h"
@@ -26,19 +27,18 @@ namespace penny
   {
     struct RandomContactScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override
       {
         input.sections(sections);
-        sections.subsection("Random contact", [&](Entries &entries) {
-          entries.numbers(
-              "Mean pressures", mean_pressures, {1, 1.5, 2, 2.5, 3}, interval("(]", 0, 100, "sqrt(V)"),
-              "p_bar/sqrt(V), V the variance of the full-contact pressure of the sampled lattice; each "
-              "load a cold start. Units: sqrt(V).");
-          entries.number("Solver tolerance", solver_tolerance, 1e-8, above(0),
-                         "Residual of the constrained CG, in units of the rms height. Units: none.");
-          entries.integer("Maximum iterations", max_iterations, 5000u, 1u, 100000000u,
-                          "Of one solve. Units: none.");
-        });
+        contact_solver_section(sections, control, 1e-8);
+      }
+
+      void entries(Entries &entries) override
+      {
+        entries.numbers(
+            "Mean pressures", mean_pressures, {1, 1.5, 2, 2.5, 3}, interval("(]", 0, 100, "sqrt(V)"),
+            "p_bar/sqrt(V), V the variance of the full-contact pressure of the sampled lattice; each "
+            "load a cold start. Units: sqrt(V).");
       }
 
       // Per realisation: the non-contact share at every load, then the iterations.
@@ -62,7 +62,7 @@ namespace penny
                   transform, gaussian_field(transform, spectrum, realisation_seed(input.surfaces.seed, k)),
                   E_star);
               std::vector<double> row(2 * n_loads);
-              const auto          steps = load_sweep(contact, loads, {max_iterations, solver_tolerance});
+              const auto          steps = load_sweep(contact, loads, control);
               for (std::size_t l = 0; l < n_loads; ++l)
                 {
                   row[l]           = steps[l].noncontact_fraction;
@@ -136,15 +136,14 @@ namespace penny
         return {};
       }
 
-      RandomSurfaceInput  input;
-      std::vector<double> mean_pressures; // p_bar/sqrt(V)
-      double              solver_tolerance;
-      unsigned int        max_iterations;
+      RandomSurfaceInput   input;
+      std::vector<double>  mean_pressures; // p_bar/sqrt(V)
+      ContactSolverControl control;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(
-      RandomContactScene, "random-contact",
+      RandomContactScene, "random-contact", "Random contact",
       "A_nc/A_0 of sampled random surfaces by FFT boundary elements against p_bar/sqrt(V), beside the "
       "isolated-gap law in both conventions and Persson's erfc",
       "")

@@ -59,7 +59,7 @@ namespace penny
 
     struct RoughSurfaceScene : Scene
     {
-      void parameters(Sections &sections) override { rough_surface_sections(sections, surface); }
+      void inputs(Sections &sections) override { rough_surface_sections(sections, surface); }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
@@ -104,7 +104,7 @@ namespace penny
   } // namespace
 
   PENNY_REGISTER_SCENE(
-      RoughSurfaceScene, "rough-surface",
+      RoughSurfaceScene, "rough-surface", "",
       "moments, summit statistics and p0 of the Roughness spectrum in both conventions, and its area-load "
       "curve",
       "")

@@ -1,5 +1,6 @@
 #include "scenes/scene.h"
 
+#include "contact/half_space_contact.h"
 #include "fe/linear_elastic_system.h"
 #include "input/input_error.h"
 #include "input/parameter_file.h"
@@ -31,11 +32,14 @@ namespace penny
       return scene;
     }
 
-    // The subsections of `scene`, its tolerance and the output folder,
-    // declared or read.
-    void list_parameters(Sections &sections, Scene &scene, std::string &output_directory)
+    // The subsections of `scene` of `type`, its tolerance and the output
+    // folder, declared or read.
+    void list_parameters(Sections &sections, const SceneType &type, Scene &scene,
+                         std::string &output_directory)
     {
-      scene.parameters(sections);
+      if (!type.section.empty())
+        sections.subsection(type.section, [&](Entries &entries) { scene.entries(entries); });
+      scene.inputs(sections);
       if (!scene.measure.empty())
         sections.subsection("Verification", [&](Entries &entries) {
           entries.number(
@@ -61,7 +65,7 @@ namespace penny
         }
       prm.declare_entry("Scene", type.name, dealii::Patterns::Selection(names), documentation);
       Sections sections(prm, false);
-      list_parameters(sections, scene, output_directory);
+      list_parameters(sections, type, scene, output_directory);
     }
   } // namespace
 
@@ -117,7 +121,7 @@ namespace penny
     declare(prm, type, *scene.scene, scene.output_directory);
     parse_parameter_file(prm, file, type.name);
     Sections sections(prm, true, std::filesystem::path(filename).parent_path().string());
-    list_parameters(sections, *scene.scene, scene.output_directory);
+    list_parameters(sections, type, *scene.scene, scene.output_directory);
     for (const std::string &input : sections.input_files())
       scene.input_files.emplace_back(input);
     std::ostringstream used;
@@ -153,6 +157,11 @@ namespace penny
         throw std::runtime_error(
             std::string(failure.what()) +
             " (subsection 'Linear solver' sets the solver, its tolerance and iterations)");
+      }
+    catch (const ContactSolverFailure &failure)
+      {
+        throw std::runtime_error(std::string(failure.what()) +
+                                 " (subsection 'Contact solver' sets its Tolerance and Maximum iterations)");
       }
     results->write("parameters.prm", file.used_parameters);
     results->commit();

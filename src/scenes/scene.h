@@ -32,9 +32,13 @@ namespace penny
   public:
     virtual ~Scene() = default;
 
-    // Lists the subsections the scene reads, into the scene's own members:
-    // called once to declare them and, once the file is parsed, to read them.
-    virtual void parameters(Sections &sections) = 0;
+    // What the scene reads, into its own members: the entries of its own
+    // subsection (named by its registration; none if that name is empty),
+    // then the subsections it shares with other scenes (a model's input,
+    // Fields, ...) with the checks across them. Each is called once to declare
+    // the entries and, once the file is parsed, to read them, in that order.
+    virtual void entries(Entries &) {}
+    virtual void inputs(Sections &) {}
 
     // Computes, prints to `log` and writes its tables into `results`.
     virtual Verdict run(const ResultFolder &results, std::ostream &log) = 0;
@@ -53,6 +57,7 @@ namespace penny
   struct SceneType
   {
     std::string                             name;
+    std::string                             section;     // the scene's own subsection; empty: none
     std::string                             description; // one line: what the run computes
     std::string                             measure;     // what its verdict measures; empty: none
     std::function<std::unique_ptr<Scene>()> create;
@@ -98,14 +103,14 @@ namespace penny
   void fields_section(Sections &sections, bool &write_fields);
 } // namespace penny
 
-// Registers the Scene subclass `Class` under `name`, its verdict held to
+// Registers the Scene subclass `Class` under `name`, its own entries in the
+// subsection `section` (empty: none), its verdict held to
 // Verification/Tolerance on `measure` (empty: no verdict); used once, at the
 // end of the scene's file.
-#define PENNY_REGISTER_SCENE(Class, name, description, measure)                                              \
+#define PENNY_REGISTER_SCENE(Class, name, section, description, measure)                                     \
   namespace                                                                                                  \
   {                                                                                                          \
-    const bool registered_scene =                                                                            \
-        ::penny::register_scene({name, description, measure, []() -> std::unique_ptr<::penny::Scene> {       \
-                                   return std::make_unique<Class>();                                         \
-                                 }});                                                                        \
+    const bool registered_scene = ::penny::register_scene(                                                   \
+        {name, section, description, measure,                                                                \
+         []() -> std::unique_ptr<::penny::Scene> { return std::make_unique<Class>(); }});                    \
   }

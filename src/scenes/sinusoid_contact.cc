@@ -13,16 +13,14 @@ namespace penny
   {
     struct SinusoidContactScene : Scene
     {
-      void parameters(Sections &sections) override
+      void entries(Entries &entries) override
       {
-        sections.subsection("Sinusoid", [&](Entries &entries) {
-          entries.numbers(
-              "Johnson parameters alpha", alphas, {0, 0.2, 0.4, 0.6}, at_least(0),
-              "alpha^2 = 2 lambda dgamma/(pi^2 E* h^2) of Johnson's adhesive 1D sinusoid, one curve each. "
-              "Units: none.");
-          entries.integer("Number of points", n_points, 199u, 2u, 100000u,
-                          "Contact semi-widths a/lambda, evenly spaced inside (0, 1/2). Units: none.");
-        });
+        entries.numbers(
+            "Johnson parameters alpha", alphas, {0, 0.2, 0.4, 0.6}, at_least(0),
+            "alpha^2 = 2 lambda dgamma/(pi^2 E* h^2) of Johnson's adhesive 1D sinusoid, one curve each. "
+            "Units: none.");
+        entries.integer("Number of points", n_points, 199u, 2u, 100000u,
+                        "Contact semi-widths a/lambda, evenly spaced inside (0, 1/2). Units: none.");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
@@ -64,6 +62,6 @@ namespace penny
     };
   } // namespace
 
-  PENNY_REGISTER_SCENE(SinusoidContactScene, "sinusoid-contact",
+  PENNY_REGISTER_SCENE(SinusoidContactScene, "sinusoid-contact", "Sinusoid",
                        "Johnson's adhesive 1D sinusoid from its closed form (paper Fig. 1)", "")
 } // namespace penny

@@ -100,15 +100,14 @@ namespace penny
 
     struct StabilityScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override { gap.sections(sections, &load); }
+
+      void entries(Entries &entries) override
       {
-        gap.sections(sections, &load);
-        sections.subsection("Stability", [&](Entries &entries) {
-          entries.number(
-              "Target accuracy", target_accuracy, 1e-5, interval("()", 0, 1),
-              "Relative K_I error a case of the stability scene must reach to pass; a case expected to "
-              "miss it is flagged with the reason. Units: none.");
-        });
+        entries.number(
+            "Target accuracy", target_accuracy, 1e-5, interval("()", 0, 1),
+            "Relative K_I error a case of the stability scene must reach to pass; a case expected to "
+            "miss it is flagged with the reason. Units: none.");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
@@ -298,6 +297,6 @@ namespace penny
   } // namespace
 
   PENNY_REGISTER_SCENE(
-      StabilityScene, "stability",
+      StabilityScene, "stability", "Stability",
       "stiff and extreme cases around the scene's parameters, each passing or flagged, in one table", "")
 } // namespace penny

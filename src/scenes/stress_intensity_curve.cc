@@ -17,14 +17,16 @@ namespace penny
   {
     struct StressIntensityCurveScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override
       {
         gap.sections(sections);
         parabola_section(sections, load);
-        sections.subsection("Stress intensity curve", [&](Entries &entries) {
-          entries.sweep("c/a", "Number of points", ratios, {0.1, 1.5, 15}, 1, 1000, interval("(]", 0, 10),
-                        "The gap radii of the curve, in units of the parabola's a.");
-        });
+      }
+
+      void entries(Entries &entries) override
+      {
+        entries.sweep("c/a", "Number of points", ratios, {0.1, 1.5, 15}, 1, 1000, interval("(]", 0, 10),
+                      "The gap radii of the curve, in units of the parabola's a.");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
@@ -69,7 +71,7 @@ namespace penny
   } // namespace
 
   PENNY_REGISTER_SCENE(
-      StressIntensityCurveScene, "stress-intensity-curve",
+      StressIntensityCurveScene, "stress-intensity-curve", "Stress intensity curve",
       "K_I of the Bueckner parabola against c/a from FE beside 2 P sqrt(c/pi) [1 - (2/3) c^2/a^2]",
       "largest |K_I FE - closed form|/(2 P sqrt(c/pi))")
 } // namespace penny

@@ -36,28 +36,29 @@ namespace penny
 
     struct SummitStatisticsScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override
       {
         input.sections(sections);
-        sections.subsection("Summit statistics", [&](Entries &entries) {
-          entries.numbers(
-              "Hurst exponents", hurst_exponents, {0.25, 0.5, 0.75}, interval("()", 0, 1),
-              "One power law per H and zeta (replacing Roughness/Hurst exponent H). Units: none.");
-          entries.numbers("Magnifications", magnifications, {8, 32}, above(1),
-                          "zeta of each power law (replacing Roughness/Magnification zeta). Units: none.");
-          entries.integer("Height bins", n_height_bins, 12u, 1u, 1000u,
-                          "Bins of the summit height distribution over [-2, 4] sqrt(V). Units: none.");
-          entries.number(
-              "Largest deviation", largest_deviation, 4, above(0),
-              "The verdict: the sampled moments, summit density and mean summit curvature lie within this "
-              "many standard errors of their expectation for the sampled lattice. Units: standard errors.");
-        });
         sections.check([&] {
           if (input.roughness.spectrum == RoughnessParameters::Spectrum::file)
             throw InputError(
                 "Roughness/Spectrum = file: summit-statistics samples the power laws of its 'Hurst "
                 "exponents' and 'Magnifications'; set Spectrum = power-law");
         });
+      }
+
+      void entries(Entries &entries) override
+      {
+        entries.numbers("Hurst exponents", hurst_exponents, {0.25, 0.5, 0.75}, interval("()", 0, 1),
+                        "One power law per H and zeta (replacing Roughness/Hurst exponent H). Units: none.");
+        entries.numbers("Magnifications", magnifications, {8, 32}, above(1),
+                        "zeta of each power law (replacing Roughness/Magnification zeta). Units: none.");
+        entries.integer("Height bins", n_height_bins, 12u, 1u, 1000u,
+                        "Bins of the summit height distribution over [-2, 4] sqrt(V). Units: none.");
+        entries.number(
+            "Largest deviation", largest_deviation, 4, above(0),
+            "The verdict: the sampled moments, summit density and mean summit curvature lie within this "
+            "many standard errors of their expectation for the sampled lattice. Units: standard errors.");
       }
 
       // Per realisation: the height moments m0, m2, m4, the pressure moments
@@ -216,7 +217,7 @@ namespace penny
   } // namespace
 
   PENNY_REGISTER_SCENE(
-      SummitStatisticsScene, "summit-statistics",
+      SummitStatisticsScene, "summit-statistics", "Summit statistics",
       "summits of the full-contact pressure of sampled Gaussian surfaces over realisations: moments, eta, "
       "summit heights and mean curvature 1/R_p beside the lattice expectation and both conventions",
       "")

@@ -17,15 +17,14 @@ namespace penny
   {
     struct WestergaardCurveScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override { periodic.sections(sections); }
+
+      void entries(Entries &entries) override
       {
-        periodic.sections(sections);
-        sections.subsection("Westergaard curve", [&](Entries &entries) {
-          entries.integer(
-              "Number of points", n_points, 8u, 1u, 1000u,
-              "Mean pressures p_bar/p* = i/(n + 1), i = 1 ... n; each is one FE root search over the "
-              "contact half-width. Units: none.");
-        });
+        entries.integer(
+            "Number of points", n_points, 8u, 1u, 1000u,
+            "Mean pressures p_bar/p* = i/(n + 1), i = 1 ... n; each is one FE root search over the "
+            "contact half-width. Units: none.");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
@@ -71,7 +70,7 @@ namespace penny
   } // namespace
 
   PENNY_REGISTER_SCENE(
-      WestergaardCurveScene, "westergaard-curve",
+      WestergaardCurveScene, "westergaard-curve", "Westergaard curve",
       "the adhesionless sinusoid: contact half-width a from FE roots of K_I = 0 beside p_bar/p* = sin^2(pi "
       "a/lambda)",
       "largest |p_bar/p* - sin^2(pi a_FE/lambda)|")

@@ -20,14 +20,13 @@ namespace penny
   {
     struct ZeroLoadGapAreaScene : Scene
     {
-      void parameters(Sections &sections) override
+      void inputs(Sections &sections) override { rough_surface_sections(sections, surface); }
+
+      void entries(Entries &entries) override
       {
-        rough_surface_sections(sections, surface);
-        sections.subsection("Zero-load gap area", [&](Entries &entries) {
-          entries.number(
-              "Largest p0/sqrt(V)", largest_adhesion_ratio, 5, at_least(0),
-              "p0/sqrt(V) runs from 0 to this value in Area-load/Number of points steps. Units: none.");
-        });
+        entries.number(
+            "Largest p0/sqrt(V)", largest_adhesion_ratio, 5, at_least(0),
+            "p0/sqrt(V) runs from 0 to this value in Area-load/Number of points steps. Units: none.");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
@@ -71,6 +70,6 @@ namespace penny
     };
   } // namespace
 
-  PENNY_REGISTER_SCENE(ZeroLoadGapAreaScene, "zero-load-gap-area",
+  PENNY_REGISTER_SCENE(ZeroLoadGapAreaScene, "zero-load-gap-area", "Zero-load gap area",
                        "A_nc/A_0 at zero mean pressure against p0/sqrt(V) (paper Fig. 3)", "")
 } // namespace penny

@@ -1,5 +1,7 @@
 #include "statistics/summit_statistics.h"
 
+#include "closed_forms/adhesive_gap.h"
+
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include <algorithm>
@@ -365,5 +367,22 @@ namespace penny
     return gauss_kronrod<double, 31>::integrate(
         [&](const double z) { return 3 * M_PI * (z - mean_pressure) * inverse_curvature_density(z); }, start,
         std::max(start, 0.) + 12 * std::sqrt(m.m0), 10, 1e-9);
+  }
+
+  double sampled_gap_area(const std::vector<Summit> &summits, const double area, const double mean_pressure,
+                          const double K_Ic)
+  {
+    double sum = 0;
+    for (const Summit &summit : summits)
+      {
+        const double P = summit.height - mean_pressure, R_p = 1 / summit.mean_curvature();
+        if (!(P > 0))
+          continue;
+        if (K_Ic == 0)
+          sum += 3 * M_PI * R_p * P;
+        else if (const auto c = closed_form::stable_gap_radius(P, R_p, K_Ic))
+          sum += M_PI * *c * *c;
+      }
+    return sum / area;
   }
 } // namespace penny

@@ -130,4 +130,13 @@ namespace penny
   // and kappa). The layer's closed forms instead weight the heights with the
   // field's own Gaussian and use one R_p for all summits.
   double expected_gap_area(const FieldMoments &moments, double mean_pressure);
+
+  // The same law, with adhesion, summed over sampled summits of a tension
+  // field (Pa; -p_fc for the full-contact pressure p_fc): a summit of height z
+  // and mean curvature kappa holds, at mean pressure p_bar, a penny gap of
+  // peak tension P = z - p_bar and R_p = 1/kappa, of radius the stable
+  // branch of K_I = K_Ic (closed_forms/adhesive_gap.h; none where P < p0 of
+  // that summit; c^2 = 3 R_p P without adhesion, K_Ic = 0). Returns the gaps'
+  // area over `area`.
+  double sampled_gap_area(const std::vector<Summit> &summits, double area, double mean_pressure, double K_Ic);
 } // namespace penny
