@@ -22,7 +22,7 @@ allowed = {
     "fracture": below_fe + ["fe"],
     "searches": below_fe + ["fe", "fracture"],
     "fourier": [],
-    "contact": ["numerics", "input", "parallel", "fourier"],
+    "contact": ["numerics", "input", "parallel", "closed_forms", "fourier"],
     "statistics": below_fe + ["fourier", "contact"],
     "output": fe_layers,
     "problems": fe_layers + spectral + ["output"],

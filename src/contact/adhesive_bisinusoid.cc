@@ -1,5 +1,6 @@
 #include "contact/adhesive_bisinusoid.h"
 
+#include "closed_forms/adhesive_gap.h"
 #include "contact/contact_geometry.h"
 #include "contact/contact_path.h"
 
@@ -10,37 +11,25 @@ namespace penny::adhesive_bisinusoid
 {
   namespace
   {
-    const double cell       = 1 / std::sqrt(2.);          // lambda/sqrt(2)
-    const double amplitude  = 1 / (std::sqrt(2.) * M_PI); // Delta: p* = sqrt(2) pi E* Delta/lambda = 1
-    const double rp         = 1 / (4 * M_PI * M_PI);      // R_p = 1/(p* k^2)
-    const double gap_factor = 0.8492635438677062;         // c_min = gap_factor (R_p K_Ic)^(2/5)
-  }                                                       // namespace
+    const double cell      = 1 / std::sqrt(2.);          // lambda/sqrt(2)
+    const double amplitude = 1 / (std::sqrt(2.) * M_PI); // Delta: p* = sqrt(2) pi E* Delta/lambda = 1
+  }                                                      // namespace
 
+  // Two gaps of radius sqrt(3/2) a, a^2 = 2 R_p P, per lambda^2.
   double isolated_noncontact_fraction(const double load_ratio)
   {
-    return 3 / (2 * M_PI) * (1 - load_ratio);
+    const double a = std::sqrt(2 * summit_radius * (1 - load_ratio));
+    return 2 * M_PI * std::pow(closed_form::adhesionless_c_over_a * a, 2);
   }
 
   double isolated_closure_margin(const double alpha)
   {
-    return psi * std::pow(2 * M_PI, 0.4) * std::pow(alpha, 0.8);
+    return closed_form::psi * adhesion_tension(summit_radius, alpha);
   }
 
-  // P(c) = c^2/(3 R_p) + sqrt(pi) K_Ic/(2 sqrt(c)) rises for c > c_min: bisection there.
   std::optional<double> isolated_gap_radius(const double load_margin, const double alpha)
   {
-    const auto tension = [&](const double c) {
-      return c * c / (3 * rp) + std::sqrt(M_PI) * alpha / (2 * std::sqrt(c));
-    };
-    double low = gap_factor * std::pow(rp * alpha, 0.4), high = 1;
-    if (load_margin < tension(low))
-      return std::nullopt;
-    for (int k = 0; k < 200; ++k)
-      {
-        const double middle                          = (low + high) / 2;
-        (tension(middle) < load_margin ? low : high) = middle;
-      }
-    return (low + high) / 2;
+    return closed_form::stable_gap_radius(load_margin, summit_radius, alpha);
   }
 
   // The valley, where the tension peaks, at the grid point (n/2, n/2).
@@ -75,24 +64,21 @@ namespace penny::adhesive_bisinusoid
   }
 
   std::vector<State> Model::loading(const std::vector<double>  &load_ratios,
-                                    const ContactSolverControl &control) const
+                                    const ContactSolverControl &control, const bool until_closure) const
   {
+    if (until_closure && !(discretisation.alpha > 0))
+      throw std::invalid_argument("adhesive bi-sinusoid: without adhesion the gaps close only at p_bar = p*");
     ContactPath        path(surface.adhesive(), "loading", control,
                             surface.adhesionless().solve(load_ratios.front(), control).gap);
     std::vector<State> states;
     for (const double load : load_ratios)
       states.push_back(state(path.to_mean_pressure(load)));
+    if (!until_closure)
+      return states;
+    if (!(path.current().contact_fraction < 1))
+      throw std::runtime_error(
+          "adhesive bi-sinusoid: the gap is already closed at the last load of the path");
+    states.push_back(state(load_extremum(surface.adhesive(), control, path.current(), 0.8, true)));
     return states;
-  }
-
-  State Model::closure(const double start_load_ratio, const ContactSolverControl &control) const
-  {
-    if (!(discretisation.alpha > 0))
-      throw std::invalid_argument("adhesive bi-sinusoid: without adhesion the gaps close only at p_bar = p*");
-    const ContactSolution from = surface.adhesive().solve(
-        start_load_ratio, control, surface.adhesionless().solve(start_load_ratio, control).gap);
-    if (!(from.contact_fraction < 1))
-      throw std::runtime_error("adhesive bi-sinusoid: the gap is already closed at the start load");
-    return state(load_extremum(surface.adhesive(), control, from, 0.8, true));
   }
 } // namespace penny::adhesive_bisinusoid

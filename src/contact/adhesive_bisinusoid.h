@@ -9,11 +9,11 @@
 // that holds one gap, centred. Units E* = lambda = p* = 1.
 //
 // Isolated-gap predictions (each gap a penny crack under the tension of its
-// summit, P = p* - p_bar and R_p = 1/(p* k^2)):
+// summit, P = p* - p_bar and R_p = 1/(p* k^2), closed_forms/adhesive_gap.h):
 // - without adhesion A_nc/A_0 -> (3/(2 pi)) (1 - p_bar/p*) as p_bar -> p*;
 // - with K_Ic = alpha p* sqrt(lambda) (w = alpha^2/2 in the units) a gap of
 //   radius c needs P(c) = c^2/(3 R_p) + sqrt(pi) K_Ic/(2 sqrt(c)), c >= c_min,
-//   and the gaps close on loading at 1 - p_bar/p* = psi (2 pi)^(2/5) alpha^(4/5).
+//   and the gaps close on loading at 1 - p_bar/p* = p0/p* = psi (2 pi)^(2/5) alpha^(4/5).
 #pragma once
 
 #include "contact/rigid_surface.h"
@@ -23,11 +23,14 @@
 
 namespace penny::adhesive_bisinusoid
 {
-  constexpr double psi = 1.2020809449045589; // p0 = psi (K_Ic^4/R_p)^(1/5)
+  // R_p of the tension peaks, 1/(p* k^2), in the units lambda/p*: with the
+  // peak tension P = 1 - p_bar/p* and K_Ic = alpha the summit's penny gap
+  // follows from the closed forms (or FE) of one gap.
+  constexpr double summit_radius = 1 / (4 * M_PI * M_PI);
 
   // (3/(2 pi)) (1 - p_bar/p*): the adhesionless non-contact area as p_bar -> p*.
   double isolated_noncontact_fraction(double load_ratio);
-  // 1 - p_bar/p* at which the gaps close on loading, psi (2 pi)^(2/5) alpha^(4/5).
+  // 1 - p_bar/p* at which the gaps close on loading, p0/p* = psi (2 pi)^(2/5) alpha^(4/5).
   double isolated_closure_margin(double alpha);
   // The isolated gap's radius c/lambda at 1 - p_bar/p* (the stable branch),
   // nothing where the tension is below p0 and the gap closes.
@@ -57,14 +60,12 @@ namespace penny::adhesive_bisinusoid
     explicit Model(const Discretisation &discretisation);
 
     // Equilibria at increasing p_bar/p* along a loading path from the
-    // adhesionless gap at the first load (with adhesion: then switched on).
-    std::vector<State> loading(const std::vector<double>  &load_ratios,
-                               const ContactSolverControl &control) const;
-
-    // With adhesion: the load at which the gap snaps shut on loading, the
-    // largest p_bar/p* along a path of falling mean gap (by 20 % a step)
-    // from the gap at `start_load_ratio`.
-    State closure(double start_load_ratio, const ContactSolverControl &control) const;
+    // adhesionless gap at the first load (with adhesion: then switched on);
+    // `until_closure` (with adhesion), then the load at which the gap snaps
+    // shut beyond the last of them, appended: the largest p_bar/p* along a
+    // path of falling mean gap (by 20 % a step) from there.
+    std::vector<State> loading(const std::vector<double> &load_ratios, const ContactSolverControl &control,
+                               bool until_closure = false) const;
 
   private:
     State state(const ContactSolution &solution) const;

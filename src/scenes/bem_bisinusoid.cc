@@ -1,16 +1,21 @@
 // bem-bisinusoid: the bi-sinusoid near full contact (full-contact pressure
 // p_bar - p* cos(kx) cos(ky)) by the adhesive boundary-element solver
 // (contact/adhesive_bisinusoid.h), against the isolated penny gap of each
-// tension peak: without adhesion A_nc/A_0 against (3/(2 pi))(1 - p_bar/p*);
-// with adhesion the load at which the gaps snap shut on loading, extrapolated
-// to the JKR limit, against 1 - p_bar/p* = psi (2 pi)^(2/5) alpha^(4/5), and
-// the gap's radius on the way against the penny gap of its summit. PASS when
-// the closure load's ratio to that asymptote at the smallest alpha lies
-// within Verification/Tolerance of 1.
+// tension peak, P = p* - p_bar and R_p = 1/(p* k^2), from its closed forms
+// and from the axisymmetric FE model: without adhesion A_nc/A_0 against
+// (3/(2 pi))(1 - p_bar/p*) and each gap's radius against the FE gap; with
+// adhesion the gap's radius along a loading path and the load at which the
+// gaps snap shut, each extrapolated to the JKR limit, against the FE gap and
+// the FE p0 and 1 - p_bar/p* = psi (2 pi)^(2/5) alpha^(4/5). PASS when the
+// closure load's ratio to that asymptote at the smallest alpha lies within
+// Verification/Tolerance of 1.
+#include "closed_forms/adhesive_gap.h"
 #include "contact/adhesive_bisinusoid.h"
 #include "contact/extrapolation.h"
 #include "problems/contact_solver.h"
+#include "problems/penny_gap.h"
 #include "scenes/scene.h"
+#include "searches/gap_searches.h"
 
 #include <deal.II/base/timer.h>
 
@@ -20,15 +25,35 @@ namespace penny
 {
   namespace
   {
-    // c_min/lambda = 0.19519 alpha^(2/5): the radius of the isolated gap at closure.
+    using adhesive_bisinusoid::summit_radius;
+
+    // c_min/lambda: the radius of the isolated gap at closure, 0.195 alpha^(2/5).
     double closing_gap_radius(const double alpha)
     {
-      return 0.19519 * std::pow(alpha, 0.4);
+      return closed_form::c_min_factor * adhesion_length(summit_radius, alpha);
+    }
+
+    // The JKR limit of results at cohesive zones `lengths` (decreasing): at
+    // the leading order the last three show, if they show one in (1/4, 4),
+    // else at order 1.
+    Extrapolated jkr_limit(const std::vector<double> &lengths, const std::vector<double> &values)
+    {
+      const std::size_t n = values.size();
+      double            order =
+          n > 2 ? observed_order(values[n - 3], values[n - 2], values[n - 1], lengths[n - 2] / lengths[n - 1])
+                           : 1;
+      if (!(order > 0.25 && order < 4))
+        order = 1;
+      return extrapolate(lengths, values, {order});
     }
 
     struct BemBisinusoidScene : Scene
     {
-      void inputs(Sections &sections) override { contact_solver_section(sections, control, 1e-9); }
+      void inputs(Sections &sections) override
+      {
+        gap.sections(sections);
+        contact_solver_section(sections, control, 1e-9);
+      }
 
       void entries(Entries &entries) override
       {
@@ -36,14 +61,18 @@ namespace penny
                         interval("()", 0, 1), "p_bar/p* of the adhesionless loading path. Units: none.");
         entries.integer("Adhesionless grid", adhesionless_points, 1024u, 16u, 8192u,
                         "Points per side of the cell lambda/sqrt(2) without adhesion. Units: none.");
-        entries.decreasing_numbers("Johnson parameters alpha", alphas, {0.1, 0.03, 0.01}, 1,
-                                   interval("[]", 1e-3, 0.3),
-                                   "alpha = K_Ic/(p* sqrt(lambda)): one closure load each. Units: none.");
+        entries.decreasing_numbers(
+            "Johnson parameters alpha", alphas, {0.1, 0.03, 0.01}, 1, interval("[]", 1e-3, 0.3),
+            "alpha = K_Ic/(p* sqrt(lambda)): one loading path to closure each. Units: none.");
+        entries.decreasing_numbers(
+            "Tension ratios P/p0", tension_ratios, {3, 2, 1.5, 1.25}, 1, interval("(]", 1, 100),
+            "The adhesive loading path: the peak tensions P = p* - p_bar of its states, in units of the "
+            "isolated gap's p0; the gaps' radii are tabulated there, and the path goes on from the last to "
+            "the closure. Units: p0.");
         entries.decreasing_numbers(
             "Cohesive zones l_pz/c_min", zones, {1. / 8, 1. / 16, 1. / 32}, 2, interval("[]", 1e-3, 0.125),
             "l_pz = E* rho^2/(pi w), in units of the closing gap's radius c_min = 0.195 alpha^(2/5) "
-            "lambda; "
-            "above c_min/8 the gap shrinks to nothing without a jump. Units: c_min.");
+            "lambda; above c_min/8 the gap shrinks to nothing without a jump. Units: c_min.");
         entries.number("Points per cohesive zone", points_per_zone, 6,
                        interval("[]", HalfSpaceContact::min_process_zone_points, 100),
                        "Grid points over l_pz. Units: none.");
@@ -61,30 +90,54 @@ namespace penny
         return 32 * static_cast<unsigned int>(std::ceil(points_per_zone / l_pz / std::sqrt(2.) / 32));
       }
 
-      Verdict run(const ResultFolder &results, std::ostream &log) override
+      // Each gap beside the isolated one: A_nc/A_0 and the radius from the
+      // share of the cell not in contact.
+      void adhesionless_gaps(PennyGapSearch &search, const ResultFolder &results, std::ostream &log) const
       {
-        Table adhesionless({{"p_bar/p*", Table::Format{4, false}},
-                            {"A_nc/A_0", Table::digits},
-                            {"(3/(2 pi))(1 - p_bar/p*)", Table::digits},
-                            {"ratio", Table::Format{6, false}}});
+        Table table({{"p_bar/p*", Table::Format{4, false}},
+                     {"A_nc/A_0", Table::digits},
+                     {"(3/(2 pi))(1 - p_bar/p*)", Table::digits},
+                     {"ratio", Table::Format{6, false}},
+                     {"c/lambda BEM", Table::digits},
+                     {"c/lambda FE", Table::digits},
+                     {"BEM/FE - 1", Table::error_digits}});
         for (const auto &state :
              adhesive_bisinusoid::Model({0, 0, adhesionless_points}).loading(load_ratios, control))
           {
             const double isolated = adhesive_bisinusoid::isolated_noncontact_fraction(state.load_ratio);
-            adhesionless.add_row({state.load_ratio, state.noncontact_fraction, isolated,
-                                  state.noncontact_fraction / isolated});
+            const double P = 1 - state.load_ratio, a = std::sqrt(2 * summit_radius * P);
+            const double fe = fe_adhesionless_gap_radius(search.gaps, P, a, MPI_COMM_WORLD);
+            table.add_row({state.load_ratio, state.noncontact_fraction, isolated,
+                           state.noncontact_fraction / isolated, *state.gap_radius, fe,
+                           *state.gap_radius / fe - 1});
           }
-        publish(adhesionless, "bem-bisinusoid-adhesionless.csv", results, log,
+        publish(table, "bem-bisinusoid-adhesionless.csv", results, log,
                 "The bi-sinusoid without adhesion: A_nc/A_0 against the isolated gaps' (3/(2 pi))(1 - "
-                "p_bar/p*)");
+                "p_bar/p*), and the gap's radius sqrt(area/pi) against the FE penny gap of its summit");
+      }
 
-        std::vector<Table::Column> columns = {{"alpha", Table::Format{4, false}},
-                                              {"isolated psi (2 pi)^(2/5) alpha^(4/5)", Table::digits}};
+      Verdict run(const ResultFolder &results, std::ostream &log) override
+      {
+        PennyGapSearch search(gap, log);
+        adhesionless_gaps(search, results, log);
+
+        std::vector<Table::Column> closure_columns = {
+            {"alpha", Table::Format{4, false}},
+            {"isolated psi (2 pi)^(2/5) alpha^(4/5)", Table::digits},
+            {"FE p0/p*", Table::digits}};
+        std::vector<Table::Column> radius_columns = {{"alpha", Table::Format{4, false}},
+                                                     {"P/p0", Table::Format{4, false}},
+                                                     {"c/lambda closed form", Table::digits},
+                                                     {"c/lambda FE", Table::digits}};
         for (const double zone : zones)
-          columns.push_back({"BEM l_pz/c_min=" + Table::label(zone), Table::digits});
+          for (auto *columns : {&closure_columns, &radius_columns})
+            columns->push_back({"BEM l_pz/c_min=" + Table::label(zone), Table::digits});
         for (const std::string column : {"JKR limit", "error estimate", "ratio to isolated"})
-          columns.push_back({column, column == "error estimate" ? Table::error_digits : Table::digits});
-        Table  closure(columns);
+          closure_columns.push_back(
+              {column, column == "error estimate" ? Table::error_digits : Table::digits});
+        for (const std::string column : {"JKR limit", "error estimate", "JKR limit/FE - 1"})
+          radius_columns.push_back({column, column == "JKR limit" ? Table::digits : Table::error_digits});
+        Table  closure(closure_columns), radii(radius_columns);
         Table  cost({{"alpha", Table::Format{4, false}},
                      {"l_pz/c_min", Table::Format{4, false}},
                      "points per side",
@@ -92,53 +145,86 @@ namespace penny
         double last_ratio = 0;
         for (const double alpha : alphas)
           {
-            const double        isolated = adhesive_bisinusoid::isolated_closure_margin(alpha);
-            std::vector<double> lengths, margins;
+            const double          isolated = adhesive_bisinusoid::isolated_closure_margin(alpha);
+            const AdhesiveMinimum minimum =
+                fe_adhesive_minimum(search.gaps, summit_radius, alpha, MPI_COMM_WORLD);
+            std::vector<double> path;
+            for (const double ratio : tension_ratios)
+              path.push_back(1 - ratio * isolated);
+            // states[state][zone]: the path's states, then the closure.
+            std::vector<std::vector<adhesive_bisinusoid::State>> states(path.size() + 1);
+            std::vector<double>                                  lengths;
             for (const double zone : zones)
               {
                 dealii::Timer      timer;
                 const double       l_pz = zone * closing_gap_radius(alpha);
                 const unsigned int n    = grid_points(alpha, zone);
-                const auto         state =
-                    adhesive_bisinusoid::Model({alpha, l_pz, n}).closure(1 - 1.3 * isolated, control);
+                const auto         on_path =
+                    adhesive_bisinusoid::Model({alpha, l_pz, n}).loading(path, control, true);
+                for (std::size_t k = 0; k < on_path.size(); ++k)
+                  states[k].push_back(on_path[k]);
                 lengths.push_back(l_pz);
-                margins.push_back(1 - state.load_ratio);
                 cost.add_row({alpha, zone, n, timer.wall_time()});
               }
-            // The leading order the levels show (if they show one), else 1.
-            double order = margins.size() > 2
-                               ? observed_order(margins[margins.size() - 3], margins[margins.size() - 2],
-                                                margins.back(), zones[zones.size() - 2] / zones.back())
-                               : 1;
-            if (!(order > 0.25 && order < 4))
-              order = 1;
-            const Extrapolated       limit = extrapolate(lengths, margins, {order});
-            std::vector<Table::Cell> row   = {alpha, isolated};
-            for (const double margin : margins)
-              row.emplace_back(margin);
-            for (const double cell : {limit.value, limit.error, limit.value / isolated})
+
+            std::vector<double> margins;
+            for (const auto &state : states.back())
+              margins.push_back(1 - state.load_ratio);
+            const Extrapolated       margin = jkr_limit(lengths, margins);
+            std::vector<Table::Cell> row    = {alpha, isolated, minimum.tension};
+            row.insert(row.end(), margins.begin(), margins.end());
+            for (const double cell : {margin.value, margin.error, margin.value / isolated})
               row.emplace_back(cell);
             closure.add_row(row);
-            last_ratio = limit.value / isolated;
+            last_ratio = margin.value / isolated;
+
+            for (std::size_t k = 0; k < path.size(); ++k)
+              {
+                const double P = 1 - path[k];
+                const auto   fe =
+                    fe_stable_gap_radius(search.gaps, P, summit_radius, alpha, minimum, MPI_COMM_WORLD);
+                std::vector<double> bem;
+                for (const auto &state : states[k])
+                  bem.push_back(state.gap_radius.value_or(0));
+                const Extrapolated       radius     = jkr_limit(lengths, bem);
+                std::vector<Table::Cell> radius_row = {
+                    alpha, tension_ratios[k], adhesive_bisinusoid::isolated_gap_radius(P, alpha).value_or(0),
+                    fe.value_or(0)};
+                radius_row.insert(radius_row.end(), bem.begin(), bem.end());
+                for (const double cell : {radius.value, radius.error, fe ? radius.value / *fe - 1 : NAN})
+                  radius_row.emplace_back(cell);
+                radii.add_row(radius_row);
+              }
           }
+        publish(
+            radii, "bem-bisinusoid-gaps.csv", results, log,
+            "The bi-sinusoid with adhesion: the gap's radius sqrt(area/pi) (area where the gap exceeds "
+            "the range rho) along the loading path at peak tensions P = p* - p_bar, at each cohesive zone "
+            "and extrapolated to the JKR limit, against the closed-form and FE penny gap of its summit "
+            "(stable branch, K_I = K_Ic)");
         publish(closure, "bem-bisinusoid-closure.csv", results, log,
                 "The bi-sinusoid with adhesion: 1 - p_bar/p* where the gaps snap shut on loading, at each "
                 "cohesive zone and extrapolated to the JKR limit, against the isolated penny gaps' "
-                "psi (2 pi)^(2/5) alpha^(4/5)");
-        publish(cost, "bem-bisinusoid-cost.csv", results, log, "Closure solves:");
+                "psi (2 pi)^(2/5) alpha^(4/5) and the FE p0 of the summit");
+        publish(cost, "bem-bisinusoid-cost.csv", results, log, "Loading paths to closure:");
+        Table summary = Table::summary();
+        search.add_cost(summary);
+        publish(summary, "bem-bisinusoid-fe-cost.csv", results, log, "FE penny gaps of the summits:");
         return verdict(std::abs(last_ratio - 1));
       }
 
-      std::vector<double>  load_ratios, alphas, zones;
+      PennyGapInput        gap;
+      ContactSolverControl control;
+      std::vector<double>  load_ratios, alphas, tension_ratios, zones;
       unsigned int         adhesionless_points;
       double               points_per_zone;
-      ContactSolverControl control;
     };
   } // namespace
 
   PENNY_REGISTER_SCENE(
       BemBisinusoidScene, "bem-bisinusoid", "BEM bi-sinusoid",
-      "the bi-sinusoid near full contact by the adhesive boundary-element solver: non-contact "
-      "area and the gaps' closure load against the isolated penny gaps of its summits",
+      "the bi-sinusoid near full contact by the adhesive boundary-element solver: non-contact area, the "
+      "gaps' "
+      "radii and their closure load against the isolated penny gaps of its summits (closed form and FE)",
       "|closure load margin/(psi (2 pi)^(2/5) alpha^(4/5)) - 1| at the smallest alpha")
 } // namespace penny
