@@ -8,7 +8,7 @@ Numbers must agree to RELATIVE (default 1e-12), or to the last digit the less
 precise file printed; RELATIVE 0 asks for identical numbers (the same run on
 1 and on N MPI ranks). Columns that hold errors or differences of nearly equal
 numbers (names with 'error', 'difference' or 'residual') are held to the same bound in
-absolute terms. Skipped: run times, memory, and observed convergence rates
+absolute terms. Skipped: run times, memory, the number of MPI ranks, and observed convergence rates
 (a rate divides by the log of an error ratio near the discretisation floor,
 which magnifies rounding a millionfold). Text must be equal. Prints the
 largest deviation per table and exits 1 on any mismatch.
@@ -24,7 +24,13 @@ bound = float(sys.argv[3]) if len(sys.argv) > 3 else 1e-12
 
 
 def skipped(column):
-    return "(s)" in column or "MiB" in column or "(MB)" in column or column.startswith("wall") or column == "rate"
+    return (
+        "(s)" in column
+        or "MiB" in column
+        or "(MB)" in column
+        or column.startswith("wall")
+        or column in ("rate", "MPI ranks")
+    )
 
 
 def last_digit(text):

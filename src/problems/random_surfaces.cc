@@ -33,6 +33,30 @@ namespace penny
     });
   }
 
+  void SampledPowerLaws::entries(Entries &entries, const std::vector<double> &default_magnifications,
+                                 const Range &magnification_range)
+  {
+    entries.numbers("Hurst exponents", hurst_exponents, {0.25, 0.5, 0.75}, interval("()", 0, 1),
+                    "One power law per H and zeta (replacing Roughness/Hurst exponent H). Units: none.");
+    entries.numbers(
+        "Magnifications", magnifications, default_magnifications, magnification_range,
+        "zeta of each power law, increasing (replacing Roughness/Magnification zeta). Units: none.");
+    for (std::size_t k = 1; entries.reading() && k < magnifications.size(); ++k)
+      entries.require(magnifications[k] > magnifications[k - 1], "Magnifications", magnifications[k],
+                      "increasing numbers in " + magnification_range.text);
+  }
+
+  void require_power_law(Sections &sections, const RoughnessParameters &roughness, const std::string &scene)
+  {
+    sections.check([&] {
+      if (roughness.spectrum == RoughnessParameters::Spectrum::file)
+        throw InputError(
+            "Roughness/Spectrum = file: " + scene +
+            " samples the power laws of its 'Hurst exponents' and 'Magnifications'; set Spectrum "
+            "= power-law");
+    });
+  }
+
   PeriodicGrid surface_grid(const RandomSurfaceParameters &surfaces, const PowerSpectrum &spectrum)
   {
     const double q0 = spectrum.wavenumbers.front(), zeta = spectrum.wavenumbers.back() / q0;

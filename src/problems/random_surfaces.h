@@ -35,6 +35,22 @@ namespace penny
     void sections(Sections &sections);
   };
 
+  // The power laws a scene on sampled surfaces studies: the entries 'Hurst
+  // exponents' and 'Magnifications' (increasing, in `magnification_range`)
+  // of its own subsection, in place of Roughness/Hurst exponent H and
+  // Magnification zeta.
+  struct SampledPowerLaws
+  {
+    std::vector<double> hurst_exponents, magnifications;
+
+    void entries(Entries &entries, const std::vector<double> &default_magnifications,
+                 const Range &magnification_range);
+  };
+
+  // Throws InputError, once read, unless Roughness is the power law: `scene`
+  // samples the power laws of its own entries.
+  void require_power_law(Sections &sections, const RoughnessParameters &roughness, const std::string &scene);
+
   // The square grid of side L = period 2 pi/q0 for a spectrum on q0 <= q <=
   // zeta q0; throws InputError naming Random surfaces/Grid points per side
   // unless its shortest wavelength spans at least 4 points.

@@ -7,7 +7,6 @@
 // of the lattice expectation.
 #include "statistics/summit_statistics.h"
 #include "contact/half_space.h"
-#include "input/input_error.h"
 #include "output/table.h"
 #include "parallel/spread_over_ranks.h"
 #include "problems/random_surfaces.h"
@@ -39,20 +38,12 @@ namespace penny
       void inputs(Sections &sections) override
       {
         input.sections(sections);
-        sections.check([&] {
-          if (input.roughness.spectrum == RoughnessParameters::Spectrum::file)
-            throw InputError(
-                "Roughness/Spectrum = file: summit-statistics samples the power laws of its 'Hurst "
-                "exponents' and 'Magnifications'; set Spectrum = power-law");
-        });
+        require_power_law(sections, input.roughness, "summit-statistics");
       }
 
       void entries(Entries &entries) override
       {
-        entries.numbers("Hurst exponents", hurst_exponents, {0.25, 0.5, 0.75}, interval("()", 0, 1),
-                        "One power law per H and zeta (replacing Roughness/Hurst exponent H). Units: none.");
-        entries.numbers("Magnifications", magnifications, {8, 32}, above(1),
-                        "zeta of each power law (replacing Roughness/Magnification zeta). Units: none.");
+        power_laws.entries(entries, {8, 32}, above(1));
         entries.integer("Height bins", n_height_bins, 12u, 1u, 1000u,
                         "Bins of the summit height distribution over [-2, 4] sqrt(V). Units: none.");
         entries.number(
@@ -91,8 +82,8 @@ namespace penny
                         "mean curvature std error (Pa/m^2)",
                         "mean curvature Kac-Rice at bin centre (Pa/m^2)"});
         double worst = 0;
-        for (const double hurst : hurst_exponents)
-          for (const double zeta : magnifications)
+        for (const double hurst : power_laws.hurst_exponents)
+          for (const double zeta : power_laws.magnifications)
             {
               const PowerSpectrum spectrum =
                   power_law_spectrum(hurst, input.roughness.q0, zeta, input.roughness.amplitude);
@@ -209,10 +200,10 @@ namespace penny
         return {worst <= largest_deviation, message.str()};
       }
 
-      RandomSurfaceInput  input;
-      std::vector<double> hurst_exponents, magnifications;
-      unsigned int        n_height_bins;
-      double              largest_deviation;
+      RandomSurfaceInput input;
+      SampledPowerLaws   power_laws;
+      unsigned int       n_height_bins;
+      double             largest_deviation;
     };
   } // namespace
 
