@@ -151,6 +151,27 @@ BOOST_AUTO_TEST_CASE(expected_gap_area_against_monte_carlo)
                4 * std::sqrt((squares[k] - sum[k] * sum[k]) / n));
 }
 
+BOOST_AUTO_TEST_CASE(isolated_gaps_over_sampled_summits)
+{
+  // Two summits of tension z = 3 and 0.9 Pa, mean curvature 2 Pa/m^2 (R_p =
+  // 1/2 m^2/Pa), on an area of 10 m^2, at p_bar = 0.5 Pa. Without adhesion each
+  // holds a gap of area 3 pi R_p P; with K_Ic = 0.3 Pa m^1/2 (p0 = 0.527 Pa)
+  // the second (P = 0.4 Pa) closes and the first keeps the stable radius of
+  // P(c) = c^2/(3 R_p) + sqrt(pi) K_Ic/(2 sqrt(c)) = 2.5 Pa, 1.8594 m, by bisection above c_min = 0.398 m.
+  const std::vector<Summit> summits = {{0, 0, 3, 1, 3}, {0, 0, 0.9, 2, 2}};
+  BOOST_TEST(sampled_gap_area(summits, 10, 0.5, 0) == 3 * M_PI * 0.5 * (2.5 + 0.4) / 10,
+             tt::tolerance(1e-14));
+  double low = 0.5, high = 3;
+  for (int k = 0; k < 100; ++k)
+    {
+      const double c                                                                = (low + high) / 2;
+      (c * c / 1.5 + std::sqrt(M_PI) * 0.3 / (2 * std::sqrt(c)) < 2.5 ? low : high) = c;
+    }
+  BOOST_TEST(low == 1.8594, tt::tolerance(1e-4));
+  BOOST_TEST(sampled_gap_area(summits, 10, 0.5, 0.3) == M_PI * low * low / 10, tt::tolerance(1e-12));
+  BOOST_TEST(sampled_gap_area(summits, 10, 3, 0.3) == 0.);
+}
+
 BOOST_AUTO_TEST_CASE(ensemble_arithmetic)
 {
   const HeightBins          bins{0, 2, 2};
