@@ -34,7 +34,7 @@ namespace penny
   unsigned int AdhesiveRandomSurfaces::grid_points(const double zone) const
   {
     const double zeta = spectrum.wavenumbers.back() / spectrum.wavenumbers.front();
-    return power_of_two_above(points_per_zone * zeta / zone);
+    return power_of_two_above(zones.points_per_zone * zeta / zone);
   }
 
   std::vector<double> RealisationAreas::pack() const
@@ -87,11 +87,12 @@ namespace penny
 
     RealisationAreas areas;
     areas.iterations = 0;
-    for (std::size_t z = 0; z < surfaces.zones.size(); ++z)
+    for (std::size_t z = 0; z < surfaces.zones.lengths.size(); ++z)
       {
-        const FourierTransform transform(square_grid(surfaces.grid_points(surfaces.zones[z]), period));
-        const GridField        h = resampled(base, transform, heights);
-        const double range       = std::sqrt(M_PI * work * surfaces.zones[z] * shortest / surfaces.E_star);
+        const FourierTransform transform(
+            square_grid(surfaces.grid_points(surfaces.zones.lengths[z]), period));
+        const GridField h  = resampled(base, transform, heights);
+        const double range = std::sqrt(M_PI * work * surfaces.zones.lengths[z] * shortest / surfaces.E_star);
         const HalfSpaceContact adhesionless(transform, h, surfaces.E_star);
         const HalfSpaceContact adhesive(transform, h, surfaces.E_star, Adhesion{work, range});
         if (z == 0)
@@ -112,7 +113,7 @@ namespace penny
             adhesionless.solve(surfaces.first_contact * surfaces.sqrt_V, surfaces.control);
         areas.iterations += state.iterations;
         std::vector<double> on_path, switched_on;
-        const bool          finest = z + 1 == surfaces.zones.size();
+        const bool          finest = z + 1 == surfaces.zones.lengths.size();
         for (const double p_bar : loads)
           {
             state = adhesive.solve(p_bar, surfaces.control, state.gap);

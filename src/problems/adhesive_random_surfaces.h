@@ -8,6 +8,7 @@
 #pragma once
 
 #include "contact/half_space_contact.h"
+#include "problems/contact_solver.h"
 #include "statistics/roughness.h"
 #include "statistics/summit_statistics.h"
 
@@ -26,8 +27,7 @@ namespace penny
     double               p0;                 // psi (K_Ic^4/R_p)^(1/5), R_p of the lattice's summits (Pa)
     std::vector<double>  mean_pressures;     // p_bar/sqrt(V), increasing
     double               first_contact;      // p_s/sqrt(V) > 0
-    std::vector<double>  zones;              // l_pz/lambda1 (lambda1 = 2 pi/(zeta q0)), decreasing
-    double               points_per_zone;    // grid points over l_pz
+    CohesiveZones        zones;              // l_pz/lambda1 (lambda1 = 2 pi/(zeta q0)), decreasing
     ContactSolverControl control;
 
     // Points per side of the grid at cohesive zone `zone` (l_pz/lambda1): the

@@ -14,4 +14,17 @@ namespace penny
                       "Iteration limit of one solve; reaching it is an error. Units: none.");
     });
   }
+
+  void CohesiveZones::entries(Entries &entries, const std::string &unit, const CohesiveZones &defaults,
+                              const std::size_t min_zones, const Range &range,
+                              const std::string &documentation)
+  {
+    entries.decreasing_numbers("Cohesive zones l_pz/" + unit, lengths, defaults.lengths, min_zones, range,
+                               "l_pz = E* rho^2/(pi w) of the exponential law, in units of " + documentation +
+                                   " Units: " + unit + ".");
+    entries.number("Points per cohesive zone", points_per_zone, defaults.points_per_zone,
+                   interval("[]", HalfSpaceContact::min_process_zone_points, 100),
+                   "Grid points over l_pz: the grid refines with the zone, and its error goes with the "
+                   "extrapolation to the JKR limit. Units: none.");
+  }
 } // namespace penny

@@ -94,13 +94,10 @@ namespace penny
             "First contact load", first_contact, 0.25, interval("(]", 0, 100, "sqrt(V)"),
             "p_s/sqrt(V): the surfaces are first pressed together without adhesion at p_s; then "
             "adhesion acts and the mean pressures are applied in increasing order. Units: sqrt(V).");
-        entries.decreasing_numbers(
-            "Cohesive zones l_pz/lambda1", zones, {1. / 8, 1. / 16, 1. / 32}, 2, interval("[]", 1e-3, 1),
-            "l_pz = E* rho^2/(pi w) in units of the shortest wavelength lambda1 = lambda0/zeta, extrapolated "
-            "to 0 (the JKR limit) at the order the last three show. Units: lambda1.");
-        entries.number("Points per cohesive zone", points_per_zone, 4,
-                       interval("[]", HalfSpaceContact::min_process_zone_points, 100),
-                       "Grid points over l_pz; the grid is the next power of two. Units: none.");
+        zones.entries(
+            entries, "lambda1", {{1. / 8, 1. / 16, 1. / 32}, 4}, 2, interval("[]", 1e-3, 1),
+            "the shortest wavelength lambda1 = lambda0/zeta, extrapolated to 0 at the order the last "
+            "three show; the grid is the next power of two.");
         entries.integer("Realisations", n_realisations, 8u, 2u, 100000u,
                         "Surfaces per H and zeta, spread over the MPI ranks. Units: none.");
         entries.integer("Seed", seed, std::uint64_t(1), std::uint64_t(0), std::uint64_t(1) << 62,
@@ -111,10 +108,10 @@ namespace penny
           entries.require(mean_pressures[k] > mean_pressures[k - 1], "Mean pressures", mean_pressures[k],
                           "increasing numbers in [0, 100] sqrt(V)");
         // Beyond 8192 points a side a solve outgrows this verifier's memory.
-        const double finest = points_per_zone * power_laws.magnifications.back() / zones.back();
-        entries.require(finest <= 8192, "Cohesive zones l_pz/lambda1", zones.back(),
+        const double finest = zones.points_per_zone * power_laws.magnifications.back() / zones.lengths.back();
+        entries.require(finest <= 8192, "Cohesive zones l_pz/lambda1", zones.lengths.back(),
                         "at least Points per cohesive zone x largest magnification/8192 = " +
-                            Table::label(points_per_zone * power_laws.magnifications.back() / 8192, 3));
+                            Table::label(zones.points_per_zone * power_laws.magnifications.back() / 8192, 3));
       }
 
       // The power law (H, zeta) of the Roughness amplitude and q0, on a grid of `n` points a side.
@@ -128,11 +125,10 @@ namespace penny
                                  mean_pressures,
                                  first_contact,
                                  zones,
-                                 points_per_zone,
                                  control};
-        const PeriodicGrid     grid = square_grid(s.grid_points(zones.front()), 2 * M_PI / roughness.q0);
-        const FieldMoments lattice  = lattice_moments(grid, pressure_spectrum(s.spectrum, s.E_star)).expected;
-        s.sqrt_V                    = std::sqrt(lattice.m0);
+        const PeriodicGrid grid = square_grid(s.grid_points(zones.lengths.front()), 2 * M_PI / roughness.q0);
+        const FieldMoments lattice = lattice_moments(grid, pressure_spectrum(s.spectrum, s.E_star)).expected;
+        s.sqrt_V                   = std::sqrt(lattice.m0);
         s.p0 = closed_form::psi * adhesion_tension(1 / expected_summits(lattice).mean_curvature, K_Ic);
         return s;
       }
@@ -156,7 +152,7 @@ namespace penny
               for (const double zeta : power_laws.magnifications)
                 cases.push_back({hurst, ratio, zeta, surfaces(hurst, zeta, K_Ic), {}, {}, {}, {}});
             }
-        const std::size_t n_zones = zones.size(), n_loads = mean_pressures.size();
+        const std::size_t n_zones = zones.lengths.size(), n_loads = mean_pressures.size();
         Progress          progress(log, "realisations", 30);
         const auto        rows =
             spread_over_ranks(MPI_COMM_WORLD, cases.size() * n_realisations, [&](const unsigned int piece) {
@@ -184,8 +180,8 @@ namespace penny
                 std::vector<std::vector<double>> values;
                 for (const auto &a : areas)
                   values.push_back({a.adhesionless[j], a.shifted[j], a.isolated_gaps[j]});
-                one.loading.push_back(jkr_limit(areas, &RealisationAreas::loading, j, zones));
-                one.switched_on.push_back(jkr_limit(areas, &RealisationAreas::switched_on, j, zones));
+                one.loading.push_back(jkr_limit(areas, &RealisationAreas::loading, j, zones.lengths));
+                one.switched_on.push_back(jkr_limit(areas, &RealisationAreas::switched_on, j, zones.lengths));
                 one.adhesionless.push_back(mean_over(values, 0));
                 one.shifted.push_back(mean_over(values, 1));
 
@@ -228,8 +224,8 @@ namespace penny
         Table summary = Table::summary();
         summary.add_row({"realisations per H and zeta", n_realisations});
         summary.add_row({"grids (points a side, largest zeta)",
-                         Table::label(cases.back().surfaces.grid_points(zones.front())) + " ... " +
-                             Table::label(cases.back().surfaces.grid_points(zones.back()))});
+                         Table::label(cases.back().surfaces.grid_points(zones.lengths.front())) + " ... " +
+                             Table::label(cases.back().surfaces.grid_points(zones.lengths.back()))});
         summary.add_row({"MPI ranks", dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)});
         summary.add_row({"wall time (s)", Table::Cell(timer.wall_time(), Table::Format{4})});
         publish(summary, "adhesive-random-contact-summary.csv", results, log);
@@ -239,7 +235,7 @@ namespace penny
       Table area_table() const
       {
         std::vector<Table::Column> columns = {"H", "zeta", {"p0/sqrtV", {4}}, "p_bar/sqrtV", "branch"};
-        for (const double zone : zones)
+        for (const double zone : zones.lengths)
           columns.push_back({"BEM l_pz/lambda1=" + Table::label(zone, 4), {4, true}});
         for (const char *name : {"BEM JKR limit", "std error", "extrapolation error"})
           columns.push_back({name, {3, true}});
@@ -358,8 +354,9 @@ namespace penny
       RoughnessParameters  roughness;
       ContactSolverControl control;
       SampledPowerLaws     power_laws;
-      std::vector<double>  adhesion_ratios, mean_pressures, zones;
-      double               first_contact, points_per_zone;
+      std::vector<double>  adhesion_ratios, mean_pressures;
+      CohesiveZones        zones; // l_pz/lambda1
+      double               first_contact;
       unsigned int         n_realisations;
       std::uint64_t        seed;
     };

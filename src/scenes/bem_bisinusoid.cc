@@ -69,25 +69,21 @@ namespace penny
             "The adhesive loading path: the peak tensions P = p* - p_bar of its states, in units of the "
             "isolated gap's p0; the gaps' radii are tabulated there, and the path goes on from the last to "
             "the closure. Units: p0.");
-        entries.decreasing_numbers(
-            "Cohesive zones l_pz/c_min", zones, {1. / 8, 1. / 16, 1. / 32}, 2, interval("[]", 1e-3, 0.125),
-            "l_pz = E* rho^2/(pi w), in units of the closing gap's radius c_min = 0.195 alpha^(2/5) "
-            "lambda; above c_min/8 the gap shrinks to nothing without a jump. Units: c_min.");
-        entries.number("Points per cohesive zone", points_per_zone, 6,
-                       interval("[]", HalfSpaceContact::min_process_zone_points, 100),
-                       "Grid points over l_pz. Units: none.");
+        zones.entries(entries, "c_min", {{1. / 8, 1. / 16, 1. / 32}, 6}, 2, interval("[]", 1e-3, 0.125),
+                      "the closing gap's radius c_min = 0.195 alpha^(2/5) lambda, extrapolated to 0 at the "
+                      "order the last three show; above c_min/8 the gap shrinks to nothing without a jump.");
         if (!entries.reading())
           return;
         // Beyond 8192 points a side a solve outgrows this verifier's memory.
-        entries.require(grid_points(alphas.back(), zones.back()) <= 8192, "Cohesive zones l_pz/c_min",
-                        zones.back(), "a grid of at most 8192 points a side at the smallest alpha");
+        entries.require(grid_points(alphas.back(), zones.lengths.back()) <= 8192, "Cohesive zones l_pz/c_min",
+                        zones.lengths.back(), "a grid of at most 8192 points a side at the smallest alpha");
       }
 
       // Points per side of the cell lambda/sqrt(2), a multiple of 32.
       unsigned int grid_points(const double alpha, const double zone) const
       {
         const double l_pz = zone * closing_gap_radius(alpha);
-        return 32 * static_cast<unsigned int>(std::ceil(points_per_zone / l_pz / std::sqrt(2.) / 32));
+        return 32 * static_cast<unsigned int>(std::ceil(zones.points_per_zone / l_pz / std::sqrt(2.) / 32));
       }
 
       // Each gap beside the isolated one: A_nc/A_0 and the radius from the
@@ -129,7 +125,7 @@ namespace penny
                                                      {"P/p0", Table::Format{4, false}},
                                                      {"c/lambda closed form", Table::digits},
                                                      {"c/lambda FE", Table::digits}};
-        for (const double zone : zones)
+        for (const double zone : zones.lengths)
           for (auto *columns : {&closure_columns, &radius_columns})
             columns->push_back({"BEM l_pz/c_min=" + Table::label(zone), Table::digits});
         for (const std::string column : {"JKR limit", "error estimate", "ratio to isolated"})
@@ -154,7 +150,7 @@ namespace penny
             // states[state][zone]: the path's states, then the closure.
             std::vector<std::vector<adhesive_bisinusoid::State>> states(path.size() + 1);
             std::vector<double>                                  lengths;
-            for (const double zone : zones)
+            for (const double zone : zones.lengths)
               {
                 dealii::Timer      timer;
                 const double       l_pz = zone * closing_gap_radius(alpha);
@@ -215,9 +211,9 @@ namespace penny
 
       PennyGapInput        gap;
       ContactSolverControl control;
-      std::vector<double>  load_ratios, alphas, tension_ratios, zones;
+      std::vector<double>  load_ratios, alphas, tension_ratios;
+      CohesiveZones        zones; // l_pz/c_min
       unsigned int         adhesionless_points;
-      double               points_per_zone;
     };
   } // namespace
 

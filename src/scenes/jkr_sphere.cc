@@ -24,17 +24,13 @@ namespace penny
 
       void entries(Entries &entries) override
       {
-        entries.decreasing_numbers(
-            "Cohesive zones l_pz/a", zones, {0.1, 0.05, 0.025, 0.0125, 0.00625}, 3, interval("[]", 1e-4, 1),
-            "l_pz = E* rho^2/(pi w), in units of JKR's contact radius at pull-off a; the pull-off is "
-            "extrapolated to 0 through the finest four (exponents 1/2, 1, 3/2: the cohesive zone's force "
-            "outside the contact falls like l_pz^(1/2)). Units: a.");
+        zones.entries(
+            entries, "a", {{0.1, 0.05, 0.025, 0.0125, 0.00625}, 4}, 3, interval("[]", 1e-4, 1),
+            "JKR's contact radius at pull-off a; the pull-off is extrapolated to 0 through the finest "
+            "four (exponents 1/2, 1, 3/2: the cohesive zone's force outside the contact falls like "
+            "l_pz^(1/2)).");
         entries.number("Period L/a", period, 6, interval("[]", 4.5, 100),
                        "The side of the periodic cell, one sphere each. Units: a.");
-        entries.number("Points per cohesive zone", points_per_zone, 4,
-                       interval("[]", HalfSpaceContact::min_process_zone_points, 100),
-                       "Grid points over l_pz; the grid error, tied to l_pz, goes with the extrapolation. "
-                       "Units: none.");
         entries.integer("Unloading steps", unloading_steps, 6u, 1u, 100u,
                         "States along the unloading path at the smallest zone, the mean gap rising by "
                         "0.1 a a step. Units: none.");
@@ -42,14 +38,15 @@ namespace penny
           return;
         // The periodic images are measured at 2 L: beyond 2^13 points a side
         // a solve outgrows this verifier's memory.
-        entries.require(
-            grid_points(zones.front(), 2 * period) <= 8192 && grid_points(zones.back(), period) <= 8192,
-            "Cohesive zones l_pz/a", zones.back(), "at least Period L/a x Points per cohesive zone/8192");
+        entries.require(grid_points(zones.lengths.front(), 2 * period) <= 8192 &&
+                            grid_points(zones.lengths.back(), period) <= 8192,
+                        "Cohesive zones l_pz/a", zones.lengths.back(),
+                        "at least Period L/a x Points per cohesive zone/8192");
       }
 
       unsigned int grid_points(const double zone, const double L) const
       {
-        return static_cast<unsigned int>(std::lround(L * points_per_zone / zone));
+        return static_cast<unsigned int>(std::lround(L * zones.points_per_zone / zone));
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
@@ -69,21 +66,22 @@ namespace penny
           return state.load;
         };
         std::vector<double> loads;
-        for (const double zone : zones)
+        for (const double zone : zones.lengths)
           loads.push_back(pull_off(zone, period));
         // The images shift the load by ~(a/L)^3: through L, 1.5 L and 2 L at the
         // coarsest zone, the shift to an infinite period.
         std::vector<double> by_period = {loads.front()}, inverse_periods = {1 / period};
         for (const double L : {1.5 * period, 2 * period})
           {
-            by_period.push_back(pull_off(zones.front(), L));
+            by_period.push_back(pull_off(zones.lengths.front(), L));
             inverse_periods.push_back(1 / L);
           }
         const Extrapolated infinite = extrapolate(inverse_periods, by_period, {3, 4});
-        const Extrapolated in_zone  = extrapolate(
-             zones, loads, zones.size() > 3 ? std::vector<double>{0.5, 1, 1.5} : std::vector<double>{0.5, 1});
-        const double value = (in_zone.value + infinite.value - loads.front()) / unit;
-        const double error = (in_zone.error + infinite.error) / unit;
+        const Extrapolated in_zone  = extrapolate(zones.lengths, loads,
+                                                 zones.lengths.size() > 3 ? std::vector<double>{0.5, 1, 1.5}
+                                                                           : std::vector<double>{0.5, 1});
+        const double       value    = (in_zone.value + infinite.value - loads.front()) / unit;
+        const double       error    = (in_zone.error + infinite.error) / unit;
         publish(pull_offs, "jkr-sphere-pull-off.csv", results, log,
                 "The JKR sphere: pull-off load F under prescribed load at each cohesive zone (period L), "
                 "and at the coarsest zone for three periods (JKR: F = -1.5 pi w R at contact radius a)");
@@ -91,14 +89,13 @@ namespace penny
         Table              path({{"contact radius/a", Table::digits},
                                  {"F/(pi w R)", Table::digits},
                                  {"JKR F(a)/(pi w R)", Table::digits},
-                                 {"relative difference", Table::error_digits}});
-        const unsigned int n = grid_points(zones.back(), period);
-        for (const auto &state :
-             adhesive_sphere::Model({zones.back(), period, n}).unloading(control, unloading_steps, 0.1))
+                                 {"difference/(pi w R)", Table::error_digits}});
+        const unsigned int n = grid_points(zones.lengths.back(), period);
+        for (const auto &state : adhesive_sphere::Model({zones.lengths.back(), period, n})
+                                     .unloading(control, unloading_steps, 0.1))
           {
             const double jkr = adhesive_sphere::jkr_load(state.contact_radius);
-            path.add_row(
-                {state.contact_radius, state.load / unit, jkr / unit, std::abs(state.load / jkr - 1)});
+            path.add_row({state.contact_radius, state.load / unit, jkr / unit, (state.load - jkr) / unit});
           }
         publish(path, "jkr-sphere-unloading.csv", results, log,
                 "Contact radius against load along the unloading path at the smallest zone, beside JKR's "
@@ -115,8 +112,8 @@ namespace penny
         return verdict(std::abs(value / -1.5 - 1));
       }
 
-      std::vector<double>  zones; // l_pz/a
-      double               period, points_per_zone;
+      CohesiveZones        zones; // l_pz/a
+      double               period;
       ContactSolverControl control;
       unsigned int         unloading_steps;
     };
