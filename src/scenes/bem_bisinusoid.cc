@@ -67,8 +67,8 @@ namespace penny
         entries.decreasing_numbers(
             "Tension ratios P/p0", tension_ratios, {3, 2, 1.5, 1.25}, 1, interval("(]", 1, 100),
             "The adhesive loading path: the peak tensions P = p* - p_bar of its states, in units of the "
-            "isolated gap's p0; the gaps' radii are tabulated there, and the path goes on from the last to "
-            "the closure. Units: p0.");
+            "isolated gap's p0 (those with P < p*, where the load presses); the gaps' radii are tabulated "
+            "there, and the path goes on from the last to the closure. Units: p0.");
         zones.entries(entries, "c_min", {{1. / 8, 1. / 16, 1. / 32}, 6}, 2, interval("[]", 1e-3, 0.125),
                       "the closing gap's radius c_min = 0.195 alpha^(2/5) lambda, extrapolated to 0 at the "
                       "order the last three show; above c_min/8 the gap shrinks to nothing without a jump.");
@@ -144,9 +144,18 @@ namespace penny
             const double          isolated = adhesive_bisinusoid::isolated_closure_margin(alpha);
             const AdhesiveMinimum minimum =
                 fe_adhesive_minimum(search.gaps, summit_radius, alpha, MPI_COMM_WORLD);
-            std::vector<double> path;
+            // The path's states at the tension ratios whose load still presses
+            // (P < p*: its first state is adhesionless); where none does, it
+            // starts halfway to the isolated closure load.
+            std::vector<double> path, path_ratios;
             for (const double ratio : tension_ratios)
-              path.push_back(1 - ratio * isolated);
+              if (ratio * isolated < 1)
+                {
+                  path.push_back(1 - ratio * isolated);
+                  path_ratios.push_back(ratio);
+                }
+            if (path.empty())
+              path.push_back((1 - isolated) / 2);
             // states[state][zone]: the path's states, then the closure.
             std::vector<std::vector<adhesive_bisinusoid::State>> states(path.size() + 1);
             std::vector<double>                                  lengths;
@@ -174,7 +183,7 @@ namespace penny
             closure.add_row(row);
             last_ratio = margin.value / isolated;
 
-            for (std::size_t k = 0; k < path.size(); ++k)
+            for (std::size_t k = 0; k < path_ratios.size(); ++k)
               {
                 const double P = 1 - path[k];
                 const auto   fe =
@@ -184,7 +193,7 @@ namespace penny
                   bem.push_back(state.gap_radius.value_or(0));
                 const Extrapolated       radius     = jkr_limit(lengths, bem);
                 std::vector<Table::Cell> radius_row = {
-                    alpha, tension_ratios[k], adhesive_bisinusoid::isolated_gap_radius(P, alpha).value_or(0),
+                    alpha, path_ratios[k], adhesive_bisinusoid::isolated_gap_radius(P, alpha).value_or(0),
                     fe.value_or(0)};
                 radius_row.insert(radius_row.end(), bem.begin(), bem.end());
                 for (const double cell : {radius.value, radius.error, fe ? radius.value / *fe - 1 : NAN})
