@@ -53,9 +53,13 @@ namespace penny::adhesive_sphere
     ContactPath           path(surface.adhesive(), "unloading", control, from.gap);
     std::vector<State>    states;
     double                mean_gap = from.mean_gap;
+    const std::size_t     apex     = std::size_t(discretisation.n_points / 2) * (discretisation.n_points + 1);
     for (unsigned int k = 0; k <= steps; ++k)
       {
-        states.push_back(state(path.to_mean_gap(mean_gap)));
+        const ContactSolution &solution = path.to_mean_gap(mean_gap);
+        if (solution.gap[apex] > range())
+          break;
+        states.push_back(state(solution));
         mean_gap += increment;
       }
     return states;

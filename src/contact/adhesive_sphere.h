@@ -49,7 +49,8 @@ namespace penny::adhesive_sphere
 
     // States along an unloading path at prescribed mean gap from Hertz's
     // contact of radius 1.2 with adhesion switched on, `steps` steps each
-    // raising the mean gap by `increment`.
+    // raising the mean gap by `increment`, until the surfaces separate (the
+    // apex's gap beyond the range rho: no contact left to measure).
     std::vector<State> unloading(const ContactSolverControl &control, unsigned int steps,
                                  double increment) const;
 

@@ -3,6 +3,8 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <cctype>
+#include <charconv>
 #include <cmath>
 #include <filesystem>
 #include <limits>
@@ -126,16 +128,22 @@ namespace penny
                           documented(documentation, range));
         return;
       }
-    try
-      {
-        value = prm.get_integer(entry);
-      }
-    catch (const dealii::ExceptionBase &)
-      {
-        throw InputError(name(entry) + " = " + in_quotes(prm.get(entry)) +
-                         " is not an integer in the allowed range " + range);
-      }
-    require(value >= lo && value <= hi, entry, value, range);
+    // Read as a 64-bit integer here: deal.II's get_integer goes through int
+    // and would wrap 2^32 + 2 to 2.
+    const std::string text  = prm.get(entry);
+    const char       *first = text.c_str();
+    while (std::isspace(static_cast<unsigned char>(*first)))
+      ++first;
+    const char *last = text.c_str() + text.size();
+    while (last > first && std::isspace(static_cast<unsigned char>(last[-1])))
+      --last;
+    const auto [end, error] = std::from_chars(first, last, value);
+    if (error == std::errc::result_out_of_range)
+      throw InputError(name(entry) + " = " + std::string(first, last) + " is outside the allowed range " + range);
+    if (error != std::errc() || end != last)
+      throw InputError(name(entry) + " = " + in_quotes(text) + " is not an integer in the allowed range " + range);
+    if (value < lo || value > hi)
+      throw InputError(name(entry) + " = " + std::to_string(value) + " is outside the allowed range " + range);
   }
 
   void Entries::numbers(const std::string &entry, std::vector<double> &values,
@@ -206,7 +214,8 @@ namespace penny
             documentation + " At least " + std::to_string(min_count) + ", decreasing.");
     if (!reading_)
       return;
-    require(values.size() >= min_count, entry, values.size(), allowed);
+    if (values.size() < min_count)
+      throw InputError(name(entry) + " = " + in_quotes(prm.get(entry)) + " is outside the allowed range " + allowed);
     for (std::size_t k = 1; k < values.size(); ++k)
       require(values[k] < values[k - 1], entry, values[k], allowed);
   }

@@ -124,6 +124,17 @@ namespace penny
     if (error || access(parent.c_str(), W_OK) != 0)
       throw InputError(entry + " cannot be created or is not writable");
 
+    // A folder inside another run's results would go when that run replaces its folder whole.
+    for (fs::path above = fs::canonical(parent, error); !error && !above.empty(); above = above.parent_path())
+      {
+        if (fs::exists(above / marker))
+          throw InputError(entry + " lies inside " + in_quotes(above.string()) +
+                           ", the results of another run, which that run replaces whole; name a folder "
+                           "outside it");
+        if (above == above.parent_path())
+          break;
+      }
+
     // The lock first: everything below looks at a folder no other run touches.
     const fs::path lock_file = parent / ("." + target.filename().string() + ".lock");
     lock                     = open(lock_file.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);

@@ -10,10 +10,10 @@
 
 namespace penny
 {
-  void RandomSurfaceInput::sections(Sections &sections)
+  void RandomSurfaceInput::sections(Sections &sections, const bool one_spectrum)
   {
     material_section(sections, material);
-    roughness_section(sections, roughness);
+    roughness_section(sections, roughness, one_spectrum);
     sections.subsection("Random surfaces", [&](Entries &entries) {
       entries.integer("Grid points per side", surfaces.n_points, 256u, 8u, 65536u,
                       "N of the periodic N x N grid; even. Units: none.");
@@ -44,17 +44,6 @@ namespace penny
     for (std::size_t k = 1; entries.reading() && k < magnifications.size(); ++k)
       entries.require(magnifications[k] > magnifications[k - 1], "Magnifications", magnifications[k],
                       "increasing numbers in " + magnification_range.text);
-  }
-
-  void require_power_law(Sections &sections, const RoughnessParameters &roughness, const std::string &scene)
-  {
-    sections.check([&] {
-      if (roughness.spectrum == RoughnessParameters::Spectrum::file)
-        throw InputError(
-            "Roughness/Spectrum = file: " + scene +
-            " samples the power laws of its 'Hurst exponents' and 'Magnifications'; set Spectrum "
-            "= power-law");
-    });
   }
 
   PeriodicGrid surface_grid(const RandomSurfaceParameters &surfaces, const PowerSpectrum &spectrum)

@@ -25,20 +25,22 @@ namespace penny
   };
 
   // What the scenes on sampled surfaces read: the solid (Material), the
-  // spectrum (Roughness) and the grid and realisations (Random surfaces).
+  // spectrum (Roughness; only its q0 and h0/lambda0 for a scene that samples
+  // power laws of its own H and zeta, `one_spectrum` false) and the grid and
+  // realisations (Random surfaces).
   struct RandomSurfaceInput
   {
     MaterialParameters      material;
     RoughnessParameters     roughness;
     RandomSurfaceParameters surfaces;
 
-    void sections(Sections &sections);
+    void sections(Sections &sections, bool one_spectrum = true);
   };
 
   // The power laws a scene on sampled surfaces studies: the entries 'Hurst
-  // exponents' and 'Magnifications' (increasing, in `magnification_range`)
-  // of its own subsection, in place of Roughness/Hurst exponent H and
-  // Magnification zeta.
+  // exponents' and 'Magnifications' (each increasing; the magnifications in
+  // `magnification_range`) of its own subsection, the q0 and h0/lambda0 of
+  // its Roughness.
   struct SampledPowerLaws
   {
     std::vector<double> hurst_exponents, magnifications;
@@ -46,10 +48,6 @@ namespace penny
     void entries(Entries &entries, const std::vector<double> &default_magnifications,
                  const Range &magnification_range);
   };
-
-  // Throws InputError, once read, unless Roughness is the power law: `scene`
-  // samples the power laws of its own entries.
-  void require_power_law(Sections &sections, const RoughnessParameters &roughness, const std::string &scene);
 
   // The square grid of side L = period 2 pi/q0 for a spectrum on q0 <= q <=
   // zeta q0; throws InputError naming Random surfaces/Grid points per side

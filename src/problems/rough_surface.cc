@@ -8,10 +8,21 @@
 
 namespace penny
 {
-  void roughness_section(Sections &sections, RoughnessParameters &roughness)
+  void roughness_section(Sections &sections, RoughnessParameters &roughness, const bool one_spectrum)
   {
     using Spectrum = RoughnessParameters::Spectrum;
     sections.subsection("Roughness", [&](Entries &entries) {
+      if (!one_spectrum)
+        {
+          roughness.spectrum = Spectrum::power_law;
+          entries.number("Long-wavelength cut-off q0", roughness.q0, 6283.185307179586, above(0),
+                         "Smallest wavenumber of the power laws, q0 = 2 pi/lambda0. Units: 1/m.");
+          double ratio = 0;
+          entries.number("Amplitude h0/lambda0", ratio, 0.01, above(0),
+                         "h0 = (h0/lambda0) 2 pi/q0 of the power laws. Units: none.");
+          roughness.amplitude = ratio * 2 * M_PI / roughness.q0;
+          return;
+        }
       entries.choice(
           "Spectrum", roughness.spectrum, Spectrum::power_law,
           EnumNames<Spectrum>{{"power-law", Spectrum::power_law}, {"file", Spectrum::file}},

@@ -14,8 +14,10 @@
 
 namespace penny
 {
-  // Roughness. Once read, a spectrum file must exist.
-  void roughness_section(Sections &sections, RoughnessParameters &roughness);
+  // Roughness. Once read, a spectrum file must exist. A scene that samples
+  // power laws of its own H and zeta (`one_spectrum` false) reads only q0 and
+  // h0/lambda0 of them.
+  void roughness_section(Sections &sections, RoughnessParameters &roughness, bool one_spectrum = true);
 
   // The spectrum a Roughness subsection describes; throws InputError naming
   // Roughness/Spectrum file for a file that is not a valid table.

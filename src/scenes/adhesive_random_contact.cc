@@ -74,16 +74,15 @@ namespace penny
       void inputs(Sections &sections) override
       {
         material_section(sections, material);
-        roughness_section(sections, roughness);
+        roughness_section(sections, roughness, false);
         contact_solver_section(sections, control, 1e-8);
-        require_power_law(sections, roughness, "adhesive-random-contact");
       }
 
       void entries(Entries &entries) override
       {
         power_laws.entries(entries, {4, 8, 16}, interval("[]", 2, 256));
         entries.numbers(
-            "Adhesion p0/sqrt(V)", adhesion_ratios, {1}, interval("(]", 0, 20),
+            "Adhesion p0/sqrt(V)", adhesion_ratios, {1}, interval("[]", 1e-3, 20),
             "p0/sqrt(V) at the first magnification, p0 = psi (K_Ic^4/R_p)^(1/5) with R_p and V of "
             "the sampled lattice's summits (Kac-Rice), one study each: this fixes w = K_Ic^2/(2 E*) "
             "of each H for every magnification. Units: none.");
@@ -306,16 +305,23 @@ namespace penny
         // 3. With magnification at fixed w: the share of the adhesionless
         // non-contact area that adhesion closes, 1 - A_nc/A_nc(adhesionless),
         // from the first to the last zeta (the cases of one H and w follow
-        // each other), at the first load of each branch.
+        // each other), at the first load where the branch exists and every
+        // zeta has gaps without adhesion.
         for (const auto branch : {&Case::loading, &Case::switched_on})
           for (std::size_t start = 0; start < cases.size(); start += power_laws.magnifications.size())
             {
               std::vector<const Case *> of_hurst;
               for (std::size_t c = start; c < start + power_laws.magnifications.size(); ++c)
                 of_hurst.push_back(&cases[c]);
-              const double hurst = cases[start].hurst;
-              std::size_t  j     = 0;
-              while (j < mean_pressures.size() && std::isnan((of_hurst.front()->*branch)[j].value.value))
+              const double hurst      = cases[start].hurst;
+              const auto   comparable = [&](const std::size_t load) {
+                for (const Case *one : of_hurst)
+                  if (std::isnan((one->*branch)[load].value.value) || !(one->adhesionless[load].value > 0))
+                    return false;
+                return true;
+              };
+              std::size_t j = 0;
+              while (j < mean_pressures.size() && !comparable(j))
                 ++j;
               if (of_hurst.size() < 2 || j == mean_pressures.size())
                 continue;

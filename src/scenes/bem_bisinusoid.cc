@@ -12,6 +12,7 @@
 #include "closed_forms/adhesive_gap.h"
 #include "contact/adhesive_bisinusoid.h"
 #include "contact/extrapolation.h"
+#include "output/progress.h"
 #include "problems/contact_solver.h"
 #include "problems/penny_gap.h"
 #include "scenes/scene.h"
@@ -62,18 +63,26 @@ namespace penny
         entries.integer("Adhesionless grid", adhesionless_points, 1024u, 16u, 8192u,
                         "Points per side of the cell lambda/sqrt(2) without adhesion. Units: none.");
         entries.decreasing_numbers(
-            "Johnson parameters alpha", alphas, {0.1, 0.03, 0.01}, 1, interval("[]", 1e-3, 0.3),
+            "Johnson parameters alpha", alphas, {0.1, 0.03, 0.01}, 1, interval("[]", 1e-3, 0.2),
             "alpha = K_Ic/(p* sqrt(lambda)): one loading path to closure each. Units: none.");
         entries.decreasing_numbers(
-            "Tension ratios P/p0", tension_ratios, {3, 2, 1.5, 1.25}, 1, interval("(]", 1, 100),
+            "Tension ratios P/p0", tension_ratios, {2, 1.5, 1.25}, 1, interval("(]", 1, 100),
             "The adhesive loading path: the peak tensions P = p* - p_bar of its states, in units of the "
-            "isolated gap's p0 (those with P < p*, where the load presses); the gaps' radii are tabulated "
-            "there, and the path goes on from the last to the closure. Units: p0.");
+            "isolated gap's p0, each below p* (the load presses; the path starts without adhesion); the "
+            "gaps' radii are tabulated there, and the path goes on from the last to the closure. Units: "
+            "p0.");
         zones.entries(entries, "c_min", {{1. / 8, 1. / 16, 1. / 32}, 6}, 2, interval("[]", 1e-3, 0.125),
                       "the closing gap's radius c_min = 0.195 alpha^(2/5) lambda, extrapolated to 0 at the "
                       "order the last three show; above c_min/8 the gap shrinks to nothing without a jump.");
         if (!entries.reading())
           return;
+        for (const double alpha : alphas)
+          {
+            const double largest = 1 / adhesive_bisinusoid::isolated_closure_margin(alpha);
+            entries.require(tension_ratios.front() < largest, "Tension ratios P/p0", tension_ratios.front(),
+                            "(1, p*/p0 = " + Table::label(largest, 3) +
+                                ") at alpha = " + Table::label(alpha) + ", where the load still presses");
+          }
         // Beyond 8192 points a side a solve outgrows this verifier's memory.
         entries.require(grid_points(alphas.back(), zones.lengths.back()) <= 8192, "Cohesive zones l_pz/c_min",
                         zones.lengths.back(), "a grid of at most 8192 points a side at the smallest alpha");
@@ -114,6 +123,7 @@ namespace penny
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
+        Progress       progress(log, "paths to closure", 0);
         PennyGapSearch search(gap, log);
         adhesionless_gaps(search, results, log);
 
@@ -144,18 +154,9 @@ namespace penny
             const double          isolated = adhesive_bisinusoid::isolated_closure_margin(alpha);
             const AdhesiveMinimum minimum =
                 fe_adhesive_minimum(search.gaps, summit_radius, alpha, MPI_COMM_WORLD);
-            // The path's states at the tension ratios whose load still presses
-            // (P < p*: its first state is adhesionless); where none does, it
-            // starts halfway to the isolated closure load.
-            std::vector<double> path, path_ratios;
+            std::vector<double> path;
             for (const double ratio : tension_ratios)
-              if (ratio * isolated < 1)
-                {
-                  path.push_back(1 - ratio * isolated);
-                  path_ratios.push_back(ratio);
-                }
-            if (path.empty())
-              path.push_back((1 - isolated) / 2);
+              path.push_back(1 - ratio * isolated);
             // states[state][zone]: the path's states, then the closure.
             std::vector<std::vector<adhesive_bisinusoid::State>> states(path.size() + 1);
             std::vector<double>                                  lengths;
@@ -170,6 +171,8 @@ namespace penny
                   states[k].push_back(on_path[k]);
                 lengths.push_back(l_pz);
                 cost.add_row({alpha, zone, n, timer.wall_time()});
+                progress.step("last alpha = " + Table::label(alpha) + ", l_pz/c_min = " + Table::label(zone) +
+                              ", " + std::to_string(n) + "^2 points");
               }
 
             std::vector<double> margins;
@@ -183,21 +186,32 @@ namespace penny
             closure.add_row(row);
             last_ratio = margin.value / isolated;
 
-            for (std::size_t k = 0; k < path_ratios.size(); ++k)
+            for (std::size_t k = 0; k < path.size(); ++k)
               {
                 const double P = 1 - path[k];
                 const auto   fe =
                     fe_stable_gap_radius(search.gaps, P, summit_radius, alpha, minimum, MPI_COMM_WORLD);
-                std::vector<double> bem;
+                // A gap closed at some zone, or in the FE model, is said to be.
+                std::vector<double>      bem;
+                std::vector<Table::Cell> radius_row = {alpha, tension_ratios[k],
+                                                       *adhesive_bisinusoid::isolated_gap_radius(P, alpha),
+                                                       fe ? Table::Cell(*fe) : Table::Cell("closed")};
                 for (const auto &state : states[k])
-                  bem.push_back(state.gap_radius.value_or(0));
-                const Extrapolated       radius     = jkr_limit(lengths, bem);
-                std::vector<Table::Cell> radius_row = {
-                    alpha, path_ratios[k], adhesive_bisinusoid::isolated_gap_radius(P, alpha).value_or(0),
-                    fe.value_or(0)};
-                radius_row.insert(radius_row.end(), bem.begin(), bem.end());
-                for (const double cell : {radius.value, radius.error, fe ? radius.value / *fe - 1 : NAN})
-                  radius_row.emplace_back(cell);
+                  {
+                    radius_row.push_back(state.gap_radius ? Table::Cell(*state.gap_radius)
+                                                          : Table::Cell("closed"));
+                    if (state.gap_radius)
+                      bem.push_back(*state.gap_radius);
+                  }
+                if (bem.size() == states[k].size())
+                  {
+                    const Extrapolated radius = jkr_limit(lengths, bem);
+                    radius_row.insert(radius_row.end(), {radius.value, radius.error});
+                    radius_row.push_back(fe ? Table::Cell(radius.value / *fe - 1)
+                                            : Table::Cell("FE gap closed"));
+                  }
+                else
+                  radius_row.insert(radius_row.end(), {"-", "-", "BEM gap closed"});
                 radii.add_row(radius_row);
               }
           }

@@ -9,6 +9,7 @@
 #include "closed_forms/periodic_array.h"
 #include "contact/adhesive_sinusoid.h"
 #include "contact/extrapolation.h"
+#include "output/progress.h"
 #include "problems/contact_solver.h"
 #include "problems/periodic_gap.h"
 #include "scenes/scene.h"
@@ -38,12 +39,12 @@ namespace penny
 
       void entries(Entries &entries) override
       {
-        entries.numbers("Johnson parameters alpha", alphas, {0.05, 0.2, 0.5}, interval("(]", 0, 0.56),
+        entries.numbers("Johnson parameters alpha", alphas, {0.05, 0.2, 0.5}, interval("[]", 0.01, 0.56),
                         "alpha = K_Ic/(p* sqrt(lambda)), one curve and one jump each. Units: none.");
         entries.numbers("Contact half-widths a/lambda", ratios, {0.1, 0.15, 0.2, 0.25, 0.3},
-                        interval("[]", 0.02, 0.45), "Where p_bar/p* is tabulated. Units: lambda.");
+                        interval("[]", 0.1, 0.4), "Where p_bar/p* is tabulated. Units: lambda.");
         entries.decreasing_numbers(
-            "Cohesive zones l_pz/lambda", zones, {1e-3, 5e-4, 2.5e-4, 1.25e-4}, 2, interval("[]", 1e-6, 0.05),
+            "Cohesive zones l_pz/lambda", zones, {1e-3, 5e-4, 2.5e-4, 1.25e-4}, 2, interval("[]", 1e-6, 0.02),
             "l_pz = E* rho^2/(pi w) of the exponential law, extrapolated to 0 through the finest four "
             "(exponents 1, 1.5, 2; the jump 2, 2.5, 3). Units: lambda.");
         entries.numbers("Points per cohesive zone", points_per_zone, {16, 32},
@@ -86,6 +87,7 @@ namespace penny
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
+        Progress            progress(log, "discretisations", 0);
         PeriodicGapSearch   search(periodic);
         const double        lambda = periodic.model.wavelength;
         std::vector<double> half_widths;
@@ -130,6 +132,8 @@ namespace penny
                     }
                   values.back()[z].push_back(jump.load_ratio);
                   cost.add_row({alpha, zones[z], n, iterations, timer.wall_time()});
+                  progress.step("last alpha = " + Table::label(alpha) + ", l_pz/lambda = " +
+                                Table::label(zones[z]) + ", " + std::to_string(n) + " points");
                 }
             const FeLoadExtremum fe_jump = fe_jump_into_contact(search.gaps, alpha, MPI_COMM_WORLD);
             for (std::size_t k = 0; k <= ratios.size(); ++k)

@@ -13,6 +13,7 @@
 // (a/L)^3, which shrinks with the contact radius at pull-off as l_pz falls.
 #include "contact/adhesive_sphere.h"
 #include "contact/extrapolation.h"
+#include "output/progress.h"
 #include "problems/contact_solver.h"
 #include "scenes/scene.h"
 
@@ -39,7 +40,7 @@ namespace penny
                        "The side of the periodic cell, one sphere each. Units: a.");
         entries.integer("Unloading steps", unloading_steps, 6u, 1u, 100u,
                         "States along the unloading path at the smallest zone, the mean gap rising by "
-                        "0.1 a a step. Units: none.");
+                        "0.1 a a step, until the surfaces separate. Units: none.");
         if (!entries.reading())
           return;
         // The periodic images are measured at 2 L: beyond 2^13 points a side
@@ -57,6 +58,7 @@ namespace penny
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
+        Progress     progress(log, "pull-offs", 0);
         const double unit = M_PI * adhesive_sphere::work_of_adhesion; // pi w R
         Table        pull_offs({{"l_pz/a", Table::Format{6, false}},
                                 {"L/a", Table::Format{4, false}},
@@ -69,6 +71,8 @@ namespace penny
           const unsigned int           n     = grid_points(zone, L);
           const adhesive_sphere::State state = adhesive_sphere::Model({zone, L, n}).pull_off(control);
           pull_offs.add_row({zone, L, n, state.load / unit, state.contact_radius, timer.wall_time()});
+          progress.step("last l_pz/a = " + Table::label(zone) + ", L/a = " + Table::label(L) + ", " +
+                          std::to_string(n) + "^2 points");
           return state.load;
         };
         std::vector<double> loads;

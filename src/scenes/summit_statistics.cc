@@ -35,11 +35,7 @@ namespace penny
 
     struct SummitStatisticsScene : Scene
     {
-      void inputs(Sections &sections) override
-      {
-        input.sections(sections);
-        require_power_law(sections, input.roughness, "summit-statistics");
-      }
+      void inputs(Sections &sections) override { input.sections(sections, false); }
 
       void entries(Entries &entries) override
       {
