@@ -51,8 +51,8 @@ namespace penny
 
   FourierTransform::FourierTransform(const PeriodicGrid &grid, const Planning planning,
                                      const MPI_Comm communicator)
-      : grid_(grid), planning_(planning), communicator_(communicator), rank_(0), first_row_(0),
-        n_rows_(grid.nx), n_coefficients_(std::size_t(grid.nx) * (grid.ny / 2 + 1)), row_stride_(grid.ny)
+      : grid_(grid), communicator_(communicator), rank_(0), first_row_(0), n_rows_(grid.nx),
+        n_coefficients_(std::size_t(grid.nx) * (grid.ny / 2 + 1)), row_stride_(grid.ny)
   {
     if (grid.nx == 0 || grid.ny == 0 || !(grid.lx > 0) || !(grid.ly > 0))
       throw std::invalid_argument("FourierTransform: the grid needs nx, ny >= 1 points and lx, ly > 0");

@@ -95,7 +95,6 @@ namespace penny
 
     const PeriodicGrid &grid() const { return grid_; }
     MPI_Comm            communicator() const { return communicator_; }
-    Planning            planning() const { return planning_; }
     // Whether the grid is split over more than one rank.
     bool split() const { return !row_starts.empty(); }
 
@@ -177,7 +176,6 @@ namespace penny
     void sum_in_place(double *values, int n) const;
 
     PeriodicGrid grid_;
-    Planning     planning_;
     MPI_Comm     communicator_;
     int          rank_;
     unsigned int first_row_, n_rows_;
