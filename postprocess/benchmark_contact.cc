@@ -10,12 +10,17 @@
 // independently) and the cold start, which first solves on the halved grids
 // (iterations on this grid + on the coarser ones in this grid's units, wall
 // time); then the six loads p_bar/sqrt(V) = 3, 2.5, ..., 0.5 as the
-// random-contact scene runs them (load_sweep: each a cold start); and the adhesive solve at 2 sqrt(V) from the adhesionless one
-// (w, rho with a cohesive zone of lambda0/64, 4 grid spacings at N = 256, and
-// a strength w/rho = sqrt(V)/2).
+// random-contact scene runs them (load_sweep: each a cold start); and the adhesive solve at 2 sqrt(V) from
+// the adhesionless one (w, rho with a cohesive zone of lambda0/64, 4 grid spacings at N = 256, and a strength
+// w/rho = sqrt(V)/2).
 //
-// Usage: benchmark_contact [measure] [N ...]   (default N: 256 512 1024 2048 4096;
-// "measure": FFTW_MEASURE plans instead of FFTW_ESTIMATE)
+// Under mpirun -np P the grid is split over the P ranks (FFTW's MPI
+// interface); one rank runs the serial transforms. Each solve's results
+// follow as "# result" lines (A_nc and the mean gap, all digits) for
+// comparison across rank counts (benchmark_contact.sh ranks).
+//
+// Usage: [mpirun -np P] benchmark_contact [measure] [N ...]   (default N: 256
+// 512 1024 2048 4096; "measure": FFTW_MEASURE plans instead of FFTW_ESTIMATE)
 #include "contact/half_space_contact.h"
 #include "statistics/random_field.h"
 #include "statistics/roughness.h"
@@ -27,6 +32,7 @@
 #include <cstring>
 #include <exception>
 #include <fstream>
+#include <mpi.h>
 #include <string>
 #include <vector>
 
@@ -49,6 +55,19 @@ namespace
     return one + " " + five + " " + fifteen;
   }
 
+  // The largest peak resident memory of the ranks (MB), from /proc/self/status.
+  double peak_memory_per_rank(const MPI_Comm communicator)
+  {
+    std::ifstream file("/proc/self/status");
+    std::string   key;
+    double        kilobytes = 0;
+    while (file >> key)
+      if (key == "VmHWM:")
+        file >> kilobytes;
+    MPI_Allreduce(MPI_IN_PLACE, &kilobytes, 1, MPI_DOUBLE, MPI_MAX, communicator);
+    return kilobytes / 1024;
+  }
+
   // Polonsky and Keer's residual of a solution: the rms gap C p - h + const
   // on the contact points and overlap elsewhere, in units of the rms height.
   double gap_residual(const FourierTransform &transform, const GridField &h, const ContactSolution &solution,
@@ -59,9 +78,9 @@ namespace
     });
     GridField  implied;
     transform.apply(compliance, solution.pressure, implied);
-    const std::size_t n     = h.size();
-    double            shift = 0, contact = 0, h_mean = 0, h_square = 0;
-    for (std::size_t i = 0; i < n; ++i)
+    const double n     = transform.grid().n_points();
+    double       shift = 0, contact = 0, h_mean = 0, h_square = 0;
+    for (std::size_t i = 0; i < h.size(); ++i)
       {
         if (solution.gap[i] == 0)
           {
@@ -71,18 +90,33 @@ namespace
         h_mean += h[i] / n;
         h_square += h[i] * h[i] / n;
       }
-    double square = 0;
-    for (std::size_t i = 0; i < n; ++i)
+    const auto sums   = transform.sums(shift, contact, h_mean, h_square);
+    double     square = 0;
+    for (std::size_t i = 0; i < h.size(); ++i)
       {
-        const double g = implied[i] - h[i] - shift / contact;
+        const double g = implied[i] - h[i] - sums[0] / sums[1];
         square += solution.gap[i] == 0 ? g * g : std::pow(std::min(g, 0.), 2);
       }
-    return std::sqrt(square / n) / std::sqrt(h_square - h_mean * h_mean);
+    return std::sqrt(transform.sum(square) / n) / std::sqrt(sums[3] - sums[2] * sums[2]);
   }
 } // namespace
 
 int main(int argc, char **argv)
 {
+  MPI_Init(&argc, &argv);
+  const MPI_Comm world = MPI_COMM_WORLD;
+  int            rank, ranks;
+  MPI_Comm_rank(world, &rank);
+  MPI_Comm_size(world, &ranks);
+  // Rank 0 prints.
+  const auto print = [&](const char *format, auto... values) {
+    if (rank == 0)
+      {
+        std::printf(format, values...);
+        std::fflush(stdout);
+      }
+  };
+  int status = 0;
   try
     {
       Planning                  planning = Planning::estimate;
@@ -98,35 +132,39 @@ int main(int argc, char **argv)
       const double               lambda0 = 1e-3, E_star = 1e7 / (1 - 0.49 * 0.49);
       const PowerSpectrum        spectrum = power_law_spectrum(0.75, 2 * M_PI / lambda0, 32, 0.01 * lambda0);
       const ContactSolverControl control{5000, 1e-8};
-      std::printf("# FFTW planning: %s; load average at the start %s\n",
-                  planning == Planning::measure ? "measure" : "estimate", load_average().c_str());
-      std::printf("# %5s | %5s %8s %9s %9s %7s %9s | %11s %8s | %5s %8s | %5s %8s %7s | %s\n", "N", "iter",
-                  "time(s)", "s/iter", "s/conv", "iter/c", "old res", "cold iter", "time(s)", "iter6",
-                  "time6(s)", "iterA", "timeA(s)", "A_nc", "load average");
+      print("# FFTW planning: %s; ranks: %d; load average at the start %s\n",
+            planning == Planning::measure ? "measure" : "estimate", ranks, load_average().c_str());
+      print("# %5s | %5s %8s %9s %9s %7s %9s | %11s %8s | %5s %8s | %5s %8s %7s | %7s | %s\n", "N", "iter",
+            "time(s)", "s/iter", "s/conv", "iter/c", "old res", "cold iter", "time(s)", "iter6", "time6(s)",
+            "iterA", "timeA(s)", "A_nc", "MB/rank", "load average");
       for (const unsigned int n : sizes)
         {
           const PeriodicGrid     grid = square_grid(n, lambda0);
-          const FourierTransform transform(grid, planning);
+          const FourierTransform transform(grid, planning, world);
           const GridField        h = gaussian_field(transform, spectrum, realisation_seed(1, 0));
           const double           sqrt_V =
               std::sqrt(lattice_moments(grid, pressure_spectrum(spectrum, E_star)).expected.m0);
           const HalfSpaceContact contact(transform, h, E_star);
 
-          // One convolution on its own, for the cost of an iteration in FFTs.
-          std::copy(h.begin(), h.end(), transform.work_array());
+          // One convolution on its own, for the cost of an iteration in FFTs
+          // (rank 0's clock decides when to stop, for all ranks).
+          transform.for_each_point(
+              [&](const std::size_t i, const std::size_t w) { transform.work_array()[w] = h[i]; });
           const auto   fft_start = Clock::now();
           const auto   probe = transform.tabulate([](const Wavevector &) { return std::complex<double>(1); });
           unsigned int repeats = 0;
-          while (repeats < 3 || seconds_since(fft_start) < 1)
+          for (int more = 1; more;)
             {
               transform.convolve_work_array(probe);
-              ++repeats;
+              more = ++repeats < 3 || seconds_since(fft_start) < 1;
+              MPI_Bcast(&more, 1, MPI_INT, 0, world);
             }
           const double convolution_time = seconds_since(fft_start) / repeats;
 
-          const auto            start  = Clock::now();
-          const ContactSolution single = contact.solve(2 * sqrt_V, control, GridField(grid.n_points(), 0.));
-          const double          time   = seconds_since(start);
+          const auto            start = Clock::now();
+          const ContactSolution single =
+              contact.solve(2 * sqrt_V, control, GridField(transform.n_local_points(), 0.));
+          const double          time       = seconds_since(start);
           const auto            cold_start = Clock::now();
           const ContactSolution cold       = contact.solve(2 * sqrt_V, control);
           const double          cold_time  = seconds_since(cold_start);
@@ -148,25 +186,40 @@ int main(int argc, char **argv)
           const ContactSolution  adhesive       = sticky.solve(2 * sqrt_V, control, single.gap);
           const double           adhesive_time  = seconds_since(adhesive_start);
 
-          std::printf(
+          const double old_residual = gap_residual(transform, h, single, E_star);
+          const double memory       = peak_memory_per_rank(world);
+          print(
               "  %5u | %5u %8.2f %9.4f %9.4f %7.2f %9.1e | %4u + %4.1f %8.2f | %5u %8.2f | %5u %8.2f %7.4f | "
-              "%s\n",
+              "%7.0f | %s\n",
               n, single.iterations, time, time / single.iterations, convolution_time,
-              time / single.iterations / convolution_time, gap_residual(transform, h, single, E_star),
-              cold.iterations, cold.coarse_iterations, cold_time, sweep_iterations, sweep_time,
-              adhesive.iterations, adhesive_time, 1 - adhesive.contact_fraction, load_average().c_str());
-          std::fflush(stdout);
+              time / single.iterations / convolution_time, old_residual, cold.iterations,
+              cold.coarse_iterations, cold_time, sweep_iterations, sweep_time, adhesive.iterations,
+              adhesive_time, 1 - adhesive.contact_fraction, memory, load_average().c_str());
+          const auto result = [&](const char *solve, const double noncontact, const double mean_gap) {
+            print("# result %u %s A_nc %.17g mean_gap %.17g\n", n, solve, noncontact, mean_gap);
+          };
+          result("single", 1 - single.contact_fraction, single.mean_gap);
+          result("cold", 1 - cold.contact_fraction, cold.mean_gap);
+          for (const LoadStep &step : steps)
+            result(("load_" + std::to_string(step.mean_pressure / sqrt_V).substr(0, 3)).c_str(),
+                   step.noncontact_fraction, step.mean_gap);
+          result("adhesive", 1 - adhesive.contact_fraction, adhesive.mean_gap);
         }
-      std::printf(
-          "# iter, time: adhesionless at 2 sqrt(V) from full contact; s/conv: one r2c + c2r pair;\n"
-          "# iter/c: the time of an iteration in convolutions (an iteration does 2.5); old res: the gap "
-          "residual of Polonsky and Keer's definition;\n# cold iter: the cold start's iterations on N^2 + "
-          "on the halved grids in units of N^2 iterations; iter6, time6: the six loads 3 ... 0.5 sqrt(V) "
-          "(load_sweep);\n# iterA, timeA, A_nc: adhesive at 2 sqrt(V) from the adhesionless state\n");
+      print("%s",
+            "# iter, time: adhesionless at 2 sqrt(V) from full contact; s/conv: one r2c + c2r pair;\n"
+            "# iter/c: the time of an iteration in convolutions (an iteration does 2.5); old res: the gap "
+            "residual of Polonsky and Keer's definition;\n# cold iter: the cold start's iterations on N^2 + "
+            "on the halved grids in units of N^2 iterations; iter6, time6: the six loads 3 ... 0.5 sqrt(V) "
+            "(load_sweep);\n# iterA, timeA, A_nc: adhesive at 2 sqrt(V) from the adhesionless state; "
+            "MB/rank: the "
+            "largest peak memory of a rank\n");
     }
   catch (const std::exception &error)
     {
-      std::fprintf(stderr, "%s\n", error.what());
-      return 1;
+      if (rank == 0)
+        std::fprintf(stderr, "%s\n", error.what());
+      status = 1;
     }
+  MPI_Finalize();
+  return status;
 }

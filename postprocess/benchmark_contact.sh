@@ -1,25 +1,58 @@
 #!/bin/sh
-# The contact solver at full size, one program after the other on one core:
-# its speed against the grid (FFTW_ESTIMATE and FFTW_MEASURE plans), then its
-# verification scenes at their shipped size (prms/bem-johnson.prm,
-# prms/jkr-sphere.prm, prms/bem-bisinusoid.prm): Johnson's sinusoid, the JKR
-# sphere and the bi-sinusoid. Each table goes to OUTPUT/<name>.txt with the load average at
+# The contact solver at full size, one program after the other: its speed
+# against the grid on one core (FFTW_ESTIMATE and FFTW_MEASURE plans), the
+# grid split over 1 and 2 MPI ranks, then its verification scenes at their
+# shipped size (prms/bem-johnson.prm, prms/jkr-sphere.prm,
+# prms/bem-bisinusoid.prm): Johnson's sinusoid, the JKR sphere and the
+# bi-sinusoid. Each table goes to OUTPUT/<name>.txt with the load average at
 # its start and end; timings mean something on an idle machine only.
 #
-# Usage: postprocess/benchmark_contact.sh BUILD_DIR OUTPUT [speed|verify|all]
-# (about: speed 15 minutes, verify several hours on an idle machine)
+# "ranks" runs benchmark_contact at N = 2048 (or $RANKS_N) under mpirun -np 1
+# and -np 2 with each planning and prints, per planning, the speed-up of each
+# timed solve on 2 ranks and the largest differences of the results between
+# the two runs: A_nc (absolute) and the mean gap (relative) of every solve.
+# (As root, Open MPI needs OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1.)
+#
+# Usage: postprocess/benchmark_contact.sh BUILD_DIR OUTPUT [speed|ranks|verify|all]
+# (about: speed 15 minutes, ranks 10 minutes, verify several hours on an idle machine)
 set -e
 build=$1
 output=$2
 what=${3:-all}
-if [ ! -x "$build/benchmark_contact" ] || [ ! -x "$build/penny" ] || [ -z "$output" ]; then
-  echo "usage: $0 BUILD_DIR OUTPUT [speed|verify|all] (BUILD_DIR holding benchmark_contact and penny)" >&2
+if [ ! -x "$build/benchmark_contact" ] || { [ ! -x "$build/penny" ] && [ "$what" != speed ] && [ "$what" != ranks ]; } ||
+  [ -z "$output" ]; then
+  echo "usage: $0 BUILD_DIR OUTPUT [speed|ranks|verify|all] (BUILD_DIR holding benchmark_contact and penny)" >&2
   exit 1
 fi
 mkdir -p "$output"
 if [ "$what" = speed ] || [ "$what" = all ]; then
   "$build/benchmark_contact" > "$output/speed-estimate.txt"
   "$build/benchmark_contact" measure > "$output/speed-measure.txt"
+fi
+if [ "$what" = ranks ] || [ "$what" = all ]; then
+  n=${RANKS_N:-2048}
+  for planning in estimate measure; do
+    option=$([ $planning = measure ] && echo measure || true)
+    for ranks in 1 2; do
+      mpirun -np $ranks "$build/benchmark_contact" $option "$n" > "$output/ranks-$planning-$ranks.txt"
+    done
+    # The table's row: | iter time ... | cold time | iter6 time6 | iterA timeA A_nc | ...
+    awk -v planning=$planning -v n="$n" '
+      FNR == 1 { file++ }
+      /^ *[0-9]+ \|/ { split($0, f, "|"); split(f[2], a, " "); split(f[3], b, " "); split(f[4], c, " "); split(f[5], d, " ")
+                       single[file] = a[2]; cold[file] = b[4]; six[file] = c[2]; sticky[file] = d[2] }
+      /^# result/ { if (file == 1) { area[$4] = $6; gap[$4] = $8 }
+                    else { da = $6 - area[$4]; dg = ($8 - gap[$4]) / gap[$4]
+                           if (da < 0) da = -da; if (dg < 0) dg = -dg
+                           if (da > area_difference) area_difference = da; if (dg > gap_difference) gap_difference = dg } }
+      END { printf "%s^2, FFTW %s: wall time on 1 and 2 ranks (s), speed-up\n", n, planning
+            printf "  six loads 3 ... 0.5 sqrt(V): %8.2f %8.2f  %.2f\n", six[1], six[2], six[1] / six[2]
+            printf "  adhesive at 2 sqrt(V):       %8.2f %8.2f  %.2f\n", sticky[1], sticky[2], sticky[1] / sticky[2]
+            printf "  from full contact:           %8.2f %8.2f  %.2f\n", single[1], single[2], single[1] / single[2]
+            printf "  cold start:                  %8.2f %8.2f  %.2f\n", cold[1], cold[2], cold[1] / cold[2]
+            printf "  largest difference 1 vs 2 ranks: A_nc %.1e, mean gap %.1e relative\n", area_difference, gap_difference }
+    ' "$output/ranks-$planning-1.txt" "$output/ranks-$planning-2.txt" | tee "$output/ranks-$planning.txt"
+  done
 fi
 if [ "$what" = verify ] || [ "$what" = all ]; then
   prms=$(dirname "$0")/../prms

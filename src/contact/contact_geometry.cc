@@ -11,7 +11,10 @@ namespace penny
   // Flood fill with an explicit stack, x the slow index, both directions periodic.
   ContactTopology contact_topology(const PeriodicGrid &grid, const GridField &gap)
   {
-    const std::size_t          n = grid.n_points();
+    const std::size_t n = grid.n_points();
+    if (gap.size() != n)
+      throw std::invalid_argument("contact_topology: the gap must hold the whole grid (a flood fill: not "
+                                  "on a grid split over ranks)");
     std::vector<unsigned char> seen(n, 0);
     std::vector<std::size_t>   stack;
     ContactTopology            topology{0, 0};
@@ -45,6 +48,9 @@ namespace penny
   double level_radius(const PeriodicGrid &grid, const GridField &f, const double level, const unsigned int i,
                       const unsigned int j, const unsigned int rays)
   {
+    if (f.size() != grid.n_points())
+      throw std::invalid_argument("level_radius: the field must hold the whole grid (not a grid split "
+                                  "over ranks)");
     const double dx = grid.lx / grid.nx, dy = grid.ly / grid.ny;
     // f at (x, y) in grid units from (i, j), bilinear and periodic.
     const auto value = [&](const double x, const double y) {

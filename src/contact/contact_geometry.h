@@ -9,7 +9,9 @@
 namespace penny
 {
   // Connected regions of contact (g = 0) and of non-contact (g > 0) on the
-  // periodic grid, points joined to their four neighbours.
+  // periodic grid, points joined to their four neighbours. Both functions
+  // here need the whole field: on a grid split over ranks they throw
+  // std::invalid_argument.
   struct ContactTopology
   {
     unsigned int contacts;

@@ -10,6 +10,9 @@ namespace penny
                            const ContactSolverControl &control, GridField initial_gap)
       : contact(contact), name(std::move(name)), control(control)
   {
+    if (contact.transform().split())
+      throw std::invalid_argument("ContactPath: the contact topology of each step needs the whole field, "
+                                  "and the grid is split over ranks (follow paths on one rank)");
     current_.gap = std::move(initial_gap);
   }
 

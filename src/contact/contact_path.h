@@ -34,6 +34,8 @@ namespace penny
   public:
     // A path named `name` from `initial_gap` (empty: full contact). Continue
     // a path under another name by starting it from the other's current().gap.
+    // Each step's topology needs the whole field: std::invalid_argument if
+    // the contact's grid is split over ranks.
     ContactPath(const HalfSpaceContact &contact, std::string name, const ContactSolverControl &control,
                 GridField initial_gap = {});
 

@@ -1,5 +1,7 @@
 #include "contact/half_space_contact.h"
 
+#include "fourier/grid_resampling.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -12,9 +14,16 @@ namespace penny
 {
   namespace
   {
-    double mean(const GridField &field)
+    // The mean over the grid of a field (its local rows on a split grid).
+    double mean(const FourierTransform &transform, const GridField &field)
     {
-      return std::accumulate(field.begin(), field.end(), 0.) / field.size();
+      return transform.sum(std::accumulate(field.begin(), field.end(), 0.)) / transform.grid().n_points();
+    }
+
+    // Whether `condition` holds on any rank: a check that throws on all ranks or none.
+    bool on_any_rank(const FourierTransform &transform, const bool condition)
+    {
+      return transform.sum(condition ? 1 : 0) > 0;
     }
 
     std::string formatted(const char *format, const double a, const double b = 0, const double c = 0)
@@ -44,9 +53,12 @@ namespace penny
     // spurious minimum where a point with a tiny gap reaches it). Without
     // adhesion alpha = -r.d/d.Kd; with it the minimum is bracketed by doubling
     // and found by safeguarded Newton. No bracket within 2^60 times the
-    // elastic step: nothing holds the surfaces together along d.
-    double step_length(const Adhesion &adhesion, const double slope_along, const double curvature,
-                       const GridField &gap, const GridField &direction, const GridField &slope)
+    // elastic step: nothing holds the surfaces together along d. On a split
+    // grid the sum over points is one over ranks: the rank of the first row
+    // adds the elastic part.
+    double step_length(const FourierTransform &transform, const Adhesion &adhesion, const double slope_along,
+                       const double curvature, const GridField &gap, const GridField &direction,
+                       const GridField &slope)
     {
       if (!adhesion.active())
         {
@@ -57,8 +69,9 @@ namespace penny
         }
       const double reach      = adhesion.reach();
       const auto   derivative = [&](const double alpha, double &second) {
-        double first = slope_along + alpha * curvature;
-        second       = curvature;
+        const bool elastic = transform.holds_first_row();
+        double     first   = elastic ? slope_along + alpha * curvature : 0;
+        second             = elastic ? curvature : 0;
         for (std::size_t i = 0; i < gap.size(); ++i)
           if (direction[i] != 0)
             {
@@ -70,7 +83,9 @@ namespace penny
               if (g > 0)
                 second -= s / adhesion.range * direction[i] * direction[i];
             }
-        return first;
+        const auto sums = transform.sums(first, second);
+        second          = sums[1];
+        return sums[0];
       };
       double alpha = curvature > 0 ? -slope_along / curvature : adhesion.range, low = 0,
              high = std::numeric_limits<double>::infinity();
@@ -104,9 +119,10 @@ namespace penny
                                      const double E_star, const Adhesion &adhesion)
       : transform_(transform), heights_(std::move(heights)), E_star(E_star), adhesion_(adhesion)
   {
-    if (heights_.size() != transform.grid().n_points())
+    if (on_any_rank(transform, heights_.size() != transform.n_local_points()))
       throw std::invalid_argument("contact solver: the heights do not match the grid");
-    if (!std::all_of(heights_.begin(), heights_.end(), [](double h) { return std::isfinite(h); }))
+    if (on_any_rank(transform, !std::all_of(heights_.begin(), heights_.end(),
+                                            [](double h) { return std::isfinite(h); })))
       throw std::invalid_argument("contact solver: the heights hold NaN or Inf");
     if (!(E_star > 0) || !std::isfinite(E_star))
       throw std::invalid_argument("contact solver: E* must be positive and finite");
@@ -127,11 +143,11 @@ namespace penny
                                                 "are needed (a finer grid or a longer range)",
                                                 zone, zone / spacing, min_process_zone_points));
       }
-    const double h_mean = mean(heights_);
+    const double h_mean = mean(transform, heights_);
     double       square = 0;
     for (const double h : heights_)
       square += (h - h_mean) * (h - h_mean);
-    height_scale = std::sqrt(square / heights_.size());
+    height_scale = std::sqrt(transform.sum(square) / transform.grid().n_points());
     if (!(height_scale > 0))
       throw std::invalid_argument("contact solver: a flat surface is in full contact at any load");
 
@@ -145,10 +161,12 @@ namespace penny
     compliance = transform.tabulate([=](const Wavevector &q) {
       return std::complex<double>(2 / (modulus * (q.kx == 0 && q.ky == 0 ? q_min : q.norm())));
     });
+    // The response at the origin to a unit load there, from the rank that holds it.
     GridField impulse(heights_.size(), 0.);
-    impulse[0] = 1;
+    if (transform.holds_first_row())
+      impulse[0] = 1;
     transform.apply(compliance, impulse, impulse);
-    point_compliance = impulse[0];
+    point_compliance = transform.sum(transform.holds_first_row() ? impulse[0] : 0);
     full_contact     = full_contact_pressure(transform, heights_, E_star);
   }
 
@@ -161,19 +179,21 @@ namespace penny
                     "(0, inf) without adhesion, (-inf, inf) with it",
                     mean_pressure));
     const std::optional<PeriodicGrid> coarse_grid = halved(transform_.grid(), 128);
-    if (!initial_gap.empty() || adhesion_.active() || !coarse_grid)
+    // A rank may hold no rows: whether a gap was given is decided over all ranks.
+    const bool given = on_any_rank(transform_, !initial_gap.empty());
+    if (given || adhesion_.active() || !coarse_grid)
       {
-        GridField gap = initial_gap.empty() ? GridField(heights_.size(), 0.) : initial_gap;
+        GridField gap = given ? initial_gap : GridField(heights_.size(), 0.);
         return minimise(Control::mean_pressure, mean_pressure, control, std::move(gap));
       }
-    const FourierTransform coarse_transform(*coarse_grid);
+    const FourierTransform coarse_transform(*coarse_grid, Planning::estimate, transform_.communicator());
     const HalfSpaceContact coarse(coarse_transform, resampled(transform_, coarse_transform, heights_),
                                   E_star);
     // Only a start: its accuracy beyond the interpolation's is wasted.
     const ContactSolution start =
         coarse.solve(mean_pressure, {control.max_iterations, std::max(control.tolerance, 1e-4)});
     ContactSolution solution = minimise(Control::mean_pressure, mean_pressure, control,
-                                        interpolated(*coarse_grid, start.gap, transform_.grid()));
+                                        interpolated(coarse_transform, start.gap, transform_));
     solution.coarse_iterations =
         (start.iterations + start.coarse_iterations) * coarse_grid->n_points() / transform_.grid().n_points();
     return solution;
@@ -186,8 +206,9 @@ namespace penny
     if (!(mean_gap > 0) || !std::isfinite(mean_gap))
       throw std::invalid_argument(
           formatted("contact solver: the mean gap %g m is outside the allowed range (0, inf)", mean_gap));
-    GridField    gap     = initial_gap.empty() ? GridField(heights_.size(), 0.) : initial_gap;
-    const double current = gap.size() == heights_.size() ? mean(gap) : 0;
+    const bool   given   = on_any_rank(transform_, !initial_gap.empty());
+    GridField    gap     = given ? initial_gap : GridField(heights_.size(), 0.);
+    const double current = on_any_rank(transform_, gap.size() != heights_.size()) ? 0 : mean(transform_, gap);
     for (double &g : gap)
       g = current > 0 ? g * mean_gap / current : mean_gap;
     return minimise(Control::mean_gap, mean_gap, control, std::move(gap));
@@ -211,16 +232,17 @@ namespace penny
   ContactSolution HalfSpaceContact::minimise(const Control control, const double value,
                                              const ContactSolverControl &solver, GridField gap) const
   {
-    const std::size_t n = heights_.size();
-    if (gap.size() != n)
+    const std::size_t n = heights_.size(), n_points = transform_.grid().n_points();
+    if (on_any_rank(transform_, gap.size() != n))
       throw std::invalid_argument("contact solver: the initial gap does not match the grid");
-    for (double &g : gap)
-      if (!(g >= 0) || !std::isfinite(g))
-        throw std::invalid_argument("contact solver: the initial gap must be finite and >= 0");
+    if (on_any_rank(transform_, !std::all_of(gap.begin(), gap.end(),
+                                             [](double g) { return g >= 0 && std::isfinite(g); })))
+      throw std::invalid_argument("contact solver: the initial gap must be finite and >= 0");
 
     const bool    fixed_load = control == Control::mean_pressure;
     const bool    adhesive   = adhesion_.active();
     double *const work       = transform_.work_array();
+    const auto    each_point = [&](auto &&f) { transform_.for_each_point(f); };
 
     GridField                  gradient(n), previous_gradient(n, 0.), step(n), direction(n, 0.), slope(n, 0.);
     GridField                  mean_response; // P_F C P_F 1, at a prescribed mean gap
@@ -230,18 +252,17 @@ namespace penny
     // At a prescribed mean gap: shift step by a multiple of P_F C P_F 1 so
     // that it keeps the mean of g, and mu and the gradient with it.
     const auto keep_mean_gap = [&]() {
-      for (std::size_t i = 0; i < n; ++i)
-        work[i] = free[i];
+      each_point([&](const std::size_t i, const std::size_t w) { work[w] = free[i]; });
       transform_.convolve_work_array(compliance);
       mean_response.resize(n);
       double step_sum = 0, response_sum = 0;
-      for (std::size_t i = 0; i < n; ++i)
-        {
-          mean_response[i] = free[i] ? work[i] : 0;
-          step_sum += step[i];
-          response_sum += mean_response[i];
-        }
-      const double shift = -step_sum / response_sum;
+      each_point([&](const std::size_t i, const std::size_t w) {
+        mean_response[i] = free[i] ? work[w] : 0;
+        step_sum += step[i];
+        response_sum += mean_response[i];
+      });
+      const auto   sums  = transform_.sums(step_sum, response_sum);
+      const double shift = -sums[0] / sums[1];
       for (std::size_t i = 0; i < n; ++i)
         {
           step[i] += shift * mean_response[i];
@@ -258,8 +279,19 @@ namespace penny
           direction_sum += direction[i];
           response_sum += mean_response[i];
         }
+      const auto sums = transform_.sums(direction_sum, response_sum);
       for (std::size_t i = 0; i < n; ++i)
-        direction[i] -= direction_sum / response_sum * mean_response[i];
+        direction[i] -= sums[0] / sums[1] * mean_response[i];
+    };
+
+    // r.d over the grid, d copied to the work array on the way.
+    const auto slope_along_direction = [&]() {
+      double slope_along = 0;
+      each_point([&](const std::size_t i, const std::size_t w) {
+        slope_along += gradient[i] * direction[i];
+        work[w] = direction[i];
+      });
+      return transform_.sum(slope_along);
     };
 
     double       residual = 0, previous_product = 0;
@@ -268,7 +300,7 @@ namespace penny
       {
         // The gradient r = p_fc + K g + mu + phi'(g), the free set, and P_F r
         // in the work array.
-        std::copy(gap.begin(), gap.end(), work);
+        each_point([&](const std::size_t i, const std::size_t w) { work[w] = gap[i]; });
         transform_.convolve_work_array(stiffness);
         if (adhesive)
           for (std::size_t i = 0; i < n; ++i)
@@ -276,25 +308,24 @@ namespace penny
         if (iteration == 0 && !fixed_load)
           {
             // mu starts as the traction that balances the gap points on average.
-            double      sum   = 0;
-            std::size_t count = 0;
-            for (std::size_t i = 0; i < n; ++i)
+            double sum = 0, count = 0;
+            each_point([&](const std::size_t i, const std::size_t w) {
               if (gap[i] > 0)
                 {
-                  sum += full_contact[i] + work[i] + slope[i];
+                  sum += full_contact[i] + work[w] + slope[i];
                   ++count;
                 }
-            mu = -sum / count;
+            });
+            const auto sums = transform_.sums(sum, count);
+            mu              = -sums[0] / sums[1];
           }
-        for (std::size_t i = 0; i < n; ++i)
-          {
-            gradient[i] = full_contact[i] + work[i] + mu + slope[i];
-            free[i]     = gap[i] > 0 || gradient[i] < 0;
-            work[i]     = free[i] ? gradient[i] : 0;
-          }
+        each_point([&](const std::size_t i, const std::size_t w) {
+          gradient[i] = full_contact[i] + work[w] + mu + slope[i];
+          free[i]     = gap[i] > 0 || gradient[i] < 0;
+          work[w]     = free[i] ? gradient[i] : 0;
+        });
         transform_.convolve_work_array(compliance);
-        for (std::size_t i = 0; i < n; ++i)
-          step[i] = free[i] ? work[i] : 0;
+        each_point([&](const std::size_t i, const std::size_t w) { step[i] = free[i] ? work[w] : 0; });
         if (!fixed_load)
           keep_mean_gap();
 
@@ -312,7 +343,8 @@ namespace penny
             product += gradient[i] * step[i];
             previous_overlap += previous_gradient[i] * step[i];
           }
-        residual = std::sqrt(square / n) / height_scale;
+        const auto sums = transform_.sums(square, product, previous_overlap);
+        residual        = std::sqrt(sums[0] / n_points) / height_scale;
         if (residual <= solver.tolerance)
           break;
         if (iteration == solver.max_iterations)
@@ -321,34 +353,24 @@ namespace penny
                         solver.max_iterations, residual, solver.tolerance));
 
         // Polak-Ribiere, never negative; a restart where that is no descent.
-        const double beta =
-            previous_product > 0 ? std::max(0., (product - previous_overlap) / previous_product) : 0;
+        const double beta = previous_product > 0 ? std::max(0., (sums[1] - sums[2]) / previous_product) : 0;
         for (std::size_t i = 0; i < n; ++i)
           direction[i] = free[i] ? -step[i] + beta * direction[i] : 0;
         if (!fixed_load)
           keep_mean_of_direction();
-        double slope_along = 0;
-        for (std::size_t i = 0; i < n; ++i)
-          {
-            slope_along += gradient[i] * direction[i];
-            work[i] = direction[i];
-          }
+        double slope_along = slope_along_direction();
         if (!(slope_along < 0))
           {
             for (std::size_t i = 0; i < n; ++i)
               direction[i] = -step[i];
             if (!fixed_load)
               keep_mean_of_direction();
-            slope_along = 0;
-            for (std::size_t i = 0; i < n; ++i)
-              {
-                slope_along += gradient[i] * direction[i];
-                work[i] = direction[i];
-              }
+            slope_along = slope_along_direction();
           }
 
-        const double curvature = n * transform_.quadratic_form_of_work_array(stiffness);
-        const double alpha     = step_length(adhesion_, slope_along, curvature, gap, direction, slope);
+        const double curvature = n_points * transform_.quadratic_form_of_work_array(stiffness);
+        const double alpha =
+            step_length(transform_, adhesion_, slope_along, curvature, gap, direction, slope);
 
         // The step, clipped at the wall; a clipped point forgets its direction.
         bool   clipped      = false;
@@ -366,30 +388,29 @@ namespace penny
               gap[i] = g;
             smallest_gap = std::min(smallest_gap, gap[i]);
           }
-        if (clipped && !fixed_load)
+        if (!fixed_load && on_any_rank(transform_, clipped))
           {
-            const double scale = value / mean(gap);
+            const double scale = value / mean(transform_, gap);
             for (double &g : gap)
               g *= scale;
           }
-        if (fixed_load && !(value > 0) && smallest_gap >= adhesion_.reach())
+        if (fixed_load && !(value > 0) && transform_.minimum(smallest_gap) >= adhesion_.reach())
           throw std::runtime_error(
               formatted("contact solver: the surfaces separate at p_bar = %g Pa (no equilibrium "
                         "in contact: beyond the pull-off load)",
                         value));
         std::swap(gradient, previous_gradient);
-        previous_product = product;
+        previous_product = sums[1];
       }
 
     ContactSolution solution;
     solution.coarse_iterations = 0;
     solution.mean_pressure     = mu;
-    solution.mean_gap          = mean(gap);
+    solution.mean_gap          = mean(transform_, gap);
     solution.iterations        = iteration;
     solution.residual          = residual;
     solution.pressure.resize(n);
-    double      elastic = 0, interaction = 0;
-    std::size_t contact = 0;
+    double elastic = 0, interaction = 0, contact = 0;
     for (std::size_t i = 0; i < n; ++i)
       {
         solution.pressure[i] = (gap[i] > 0 ? 0 : std::max(gradient[i], 0.)) - slope[i];
@@ -398,8 +419,9 @@ namespace penny
           interaction += adhesion_.energy(gap[i]);
         contact += gap[i] == 0;
       }
-    solution.energy           = (elastic / 2 + interaction) / n;
-    solution.contact_fraction = double(contact) / n;
+    const auto sums           = transform_.sums(elastic, interaction, contact);
+    solution.energy           = (sums[0] / 2 + sums[1]) / n_points;
+    solution.contact_fraction = sums[2] / n_points;
     solution.gap              = std::move(gap);
     return solution;
   }
@@ -414,7 +436,8 @@ namespace penny
     for (const double p_bar : mean_pressures)
       {
         const ContactSolution solution = contact.solve(p_bar, control);
-        steps.push_back({p_bar, 1 - solution.contact_fraction, solution.iterations, solution.residual});
+        steps.push_back({p_bar, 1 - solution.contact_fraction, solution.mean_gap, solution.iterations,
+                         solution.residual});
       }
     return steps;
   }

@@ -17,6 +17,11 @@
 // where g > 0 and is the wall's reaction (>= 0) where g = 0. Without adhesion
 // Pi is convex and the equilibrium unique; with adhesion several equilibria
 // coexist and the one found depends on the start (contact_path.h).
+//
+// On a grid split over the ranks of a communicator (fourier_transform.h)
+// heights, gaps and pressures are the rank's rows, every member is
+// collective, each sum over the grid is a sum over the ranks, and the scalar
+// results and errors are the same on every rank.
 #pragma once
 
 #include "contact/adhesion.h"
@@ -78,7 +83,8 @@ namespace penny
     // direction (heights resampled, recursively while the halved grid keeps
     // 128 points a side; to a tolerance of at least 1e-4) and starts from that
     // gap interpolated: nested iteration, after which the iterations on the
-    // fine grid hardly depend on it. Throws ContactSolverFailure (one line)
+    // fine grid hardly depend on it (on a split grid the halved grids are
+    // split over the same ranks). Throws ContactSolverFailure (one line)
     // if the residual does not fall below the tolerance within
     // max_iterations, std::runtime_error if the surfaces separate (p_bar
     // beyond the pull-off load).
@@ -117,12 +123,13 @@ namespace penny
     double point_compliance; // the diagonal of C: the displacement of a point under its own unit load
   };
 
-  // One load of a sweep: the non-contact share of the grid points and the
-  // solver's cost and residual.
+  // One load of a sweep: the non-contact share of the grid points, the mean
+  // gap and the solver's cost and residual.
   struct LoadStep
   {
     double       mean_pressure;
     double       noncontact_fraction;
+    double       mean_gap;
     unsigned int iterations;
     double       residual;
   };

@@ -1,6 +1,6 @@
 #include "fourier/fourier_transform.h"
 
-#include <fftw3.h>
+#include <fftw3-mpi.h>
 
 #include <algorithm>
 #include <cmath>
@@ -18,17 +18,83 @@ namespace penny
     return std::hypot(qx, qy);
   }
 
-  FourierTransform::FourierTransform(const PeriodicGrid &grid, const Planning planning) : grid_(grid)
+  Wavevector wavevector(const PeriodicGrid &grid, const unsigned int i, const unsigned int ky)
+  {
+    const int kx = i <= grid.nx / 2 ? int(i) : int(i) - int(grid.nx);
+    return {kx,
+            int(ky),
+            2 * M_PI * kx / grid.lx,
+            2 * M_PI * ky / grid.ly,
+            grid.nx % 2 == 0 && i == grid.nx / 2,
+            grid.ny % 2 == 0 && ky == grid.ny / 2};
+  }
+
+  namespace
+  {
+    // The start of each rank's block and the end, from the blocks' sizes.
+    std::vector<unsigned int> block_starts(const MPI_Comm communicator, const unsigned int size)
+    {
+      int ranks;
+      MPI_Comm_size(communicator, &ranks);
+      std::vector<unsigned int> starts(ranks + 1, 0);
+      MPI_Allgather(&size, 1, MPI_UNSIGNED, starts.data() + 1, 1, MPI_UNSIGNED, communicator);
+      for (int r = 0; r < ranks; ++r)
+        starts[r + 1] += starts[r];
+      return starts;
+    }
+
+    int owner(const std::vector<unsigned int> &starts, const unsigned int index)
+    {
+      return std::upper_bound(starts.begin(), starts.end(), index) - starts.begin() - 1;
+    }
+  } // namespace
+
+  FourierTransform::FourierTransform(const PeriodicGrid &grid, const Planning planning,
+                                     const MPI_Comm communicator)
+      : grid_(grid), communicator_(communicator), rank_(0), first_row_(0), n_rows_(grid.nx),
+        n_coefficients_(std::size_t(grid.nx) * (grid.ny / 2 + 1)), row_stride_(grid.ny)
   {
     if (grid.nx == 0 || grid.ny == 0 || !(grid.lx > 0) || !(grid.ly > 0))
       throw std::invalid_argument("FourierTransform: the grid needs nx, ny >= 1 points and lx, ly > 0");
-    real_buffer    = fftw_alloc_real(grid.n_points());
-    complex_buffer = reinterpret_cast<std::complex<double> *>(fftw_alloc_complex(n_coefficients()));
+    int ranks = 1;
+    if (communicator != MPI_COMM_SELF)
+      MPI_Comm_size(communicator, &ranks);
     // FFTW_MEASURE overwrites the arrays while it plans; they hold nothing yet.
-    const unsigned int flags    = planning == Planning::estimate ? FFTW_ESTIMATE : FFTW_MEASURE;
-    auto              *spectrum = reinterpret_cast<fftw_complex *>(complex_buffer);
-    forward_plan                = fftw_plan_dft_r2c_2d(grid.nx, grid.ny, real_buffer, spectrum, flags);
-    inverse_plan                = fftw_plan_dft_c2r_2d(grid.nx, grid.ny, spectrum, real_buffer, flags);
+    const unsigned int flags = planning == Planning::estimate ? FFTW_ESTIMATE : FFTW_MEASURE;
+    if (ranks == 1)
+      {
+        real_buffer    = fftw_alloc_real(grid.n_points());
+        complex_buffer = reinterpret_cast<std::complex<double> *>(fftw_alloc_complex(n_coefficients_));
+        auto *spectrum = reinterpret_cast<fftw_complex *>(complex_buffer);
+        forward_plan   = fftw_plan_dft_r2c_2d(grid.nx, grid.ny, real_buffer, spectrum, flags);
+        inverse_plan   = fftw_plan_dft_c2r_2d(grid.nx, grid.ny, spectrum, real_buffer, flags);
+        return;
+      }
+    // In place on a slab of rows, each padded to 2 (ny/2 + 1) values; the
+    // spectrum's lines ky split over the ranks as the omitted transpose left
+    // them. FFTW's MPI planner times collectively, so FFTW_MEASURE picks one
+    // algorithm on every rank.
+    MPI_Comm_rank(communicator, &rank_);
+    static const bool initialised = (fftw_mpi_init(), true);
+    (void)initialised;
+    const ptrdiff_t n_lines = grid.ny / 2 + 1;
+    ptrdiff_t       rows, row, lines, line;
+    const ptrdiff_t complex_size =
+        fftw_mpi_local_size_2d_transposed(grid.nx, n_lines, communicator, &rows, &row, &lines, &line);
+    first_row_      = rows > 0 ? row : 0;
+    n_rows_         = rows;
+    first_line_     = lines > 0 ? line : 0;
+    n_coefficients_ = std::size_t(lines) * grid.nx;
+    row_stride_     = 2 * n_lines;
+    row_starts      = block_starts(communicator, n_rows_);
+    line_starts     = block_starts(communicator, lines);
+    real_buffer     = fftw_alloc_real(2 * std::max<ptrdiff_t>(complex_size, 1));
+    complex_buffer  = reinterpret_cast<std::complex<double> *>(real_buffer);
+    auto *spectrum  = reinterpret_cast<fftw_complex *>(complex_buffer);
+    forward_plan    = fftw_mpi_plan_dft_r2c_2d(grid.nx, grid.ny, real_buffer, spectrum, communicator,
+                                               flags | FFTW_MPI_TRANSPOSED_OUT);
+    inverse_plan    = fftw_mpi_plan_dft_c2r_2d(grid.nx, grid.ny, spectrum, real_buffer, communicator,
+                                               flags | FFTW_MPI_TRANSPOSED_IN);
   }
 
   FourierTransform::~FourierTransform()
@@ -36,29 +102,46 @@ namespace penny
     fftw_destroy_plan(static_cast<fftw_plan>(forward_plan));
     fftw_destroy_plan(static_cast<fftw_plan>(inverse_plan));
     fftw_free(real_buffer);
-    fftw_free(complex_buffer);
+    if (!split())
+      fftw_free(complex_buffer);
+  }
+
+  int FourierTransform::n_ranks() const
+  {
+    return split() ? int(row_starts.size()) - 1 : 1;
+  }
+
+  std::pair<unsigned int, unsigned int> FourierTransform::rows_of(const int rank) const
+  {
+    if (!split())
+      return {0, grid_.nx};
+    return {row_starts[rank], row_starts[rank + 1] - row_starts[rank]};
+  }
+
+  int FourierTransform::row_owner(const unsigned int i) const
+  {
+    return split() ? owner(row_starts, i) : 0;
+  }
+
+  int FourierTransform::line_owner(const unsigned int ky) const
+  {
+    return split() ? owner(line_starts, ky) : 0;
   }
 
   Wavevector FourierTransform::wavevector(const std::size_t coefficient) const
   {
+    if (split())
+      return penny::wavevector(grid_, coefficient % grid_.nx, first_line_ + coefficient / grid_.nx);
     const unsigned int n_y = grid_.ny / 2 + 1;
-    const unsigned int i = coefficient / n_y, j = coefficient % n_y;
-    const int          kx = i <= grid_.nx / 2 ? int(i) : int(i) - int(grid_.nx);
-    const int          ky = j;
-    return {kx,
-            ky,
-            2 * M_PI * kx / grid_.lx,
-            2 * M_PI * ky / grid_.ly,
-            grid_.nx % 2 == 0 && i == grid_.nx / 2,
-            grid_.ny % 2 == 0 && j == grid_.ny / 2};
+    return penny::wavevector(grid_, coefficient / n_y, coefficient % n_y);
   }
 
   FourierTransform::Spectrum FourierTransform::forward(const GridField &field) const
   {
-    std::copy(field.begin(), field.end(), real_buffer);
+    for_each_point([&](const std::size_t i, const std::size_t w) { real_buffer[w] = field[i]; });
     fftw_execute(static_cast<fftw_plan>(forward_plan));
     const double scale = 1. / grid_.n_points();
-    Spectrum     coefficients(complex_buffer, complex_buffer + n_coefficients());
+    Spectrum     coefficients(complex_buffer, complex_buffer + n_coefficients_);
     for (auto &c : coefficients)
       c *= scale;
     return coefficients;
@@ -68,13 +151,15 @@ namespace penny
   {
     std::copy(coefficients.begin(), coefficients.end(), complex_buffer);
     fftw_execute(static_cast<fftw_plan>(inverse_plan));
-    return GridField(real_buffer, real_buffer + grid_.n_points());
+    GridField field(n_local_points());
+    for_each_point([&](const std::size_t i, const std::size_t w) { field[i] = real_buffer[w]; });
+    return field;
   }
 
   FourierTransform::Spectrum
   FourierTransform::tabulate(const std::function<std::complex<double>(const Wavevector &)> &multiplier) const
   {
-    Spectrum table(n_coefficients());
+    Spectrum table(n_coefficients_);
     for (std::size_t c = 0; c < table.size(); ++c)
       table[c] = multiplier(wavevector(c));
     return table;
@@ -82,9 +167,10 @@ namespace penny
 
   void FourierTransform::apply(const Spectrum &multiplier, const GridField &in, GridField &out) const
   {
-    std::copy(in.begin(), in.end(), real_buffer);
+    for_each_point([&](const std::size_t i, const std::size_t w) { real_buffer[w] = in[i]; });
     convolve_work_array(multiplier);
-    out.assign(real_buffer, real_buffer + grid_.n_points());
+    out.resize(n_local_points());
+    for_each_point([&](const std::size_t i, const std::size_t w) { out[i] = real_buffer[w]; });
   }
 
   void FourierTransform::convolve_work_array(const Spectrum &multiplier) const
@@ -105,28 +191,33 @@ namespace penny
     double             sum = 0;
     for (std::size_t c = 0; c < multiplier.size(); ++c)
       {
-        const unsigned int j      = c % n_y;
-        const double       weight = j == 0 || (grid_.ny % 2 == 0 && j == grid_.ny / 2) ? 1 : 2;
+        const unsigned int ky     = split() ? first_line_ + c / grid_.nx : c % n_y;
+        const double       weight = ky == 0 || (grid_.ny % 2 == 0 && ky == grid_.ny / 2) ? 1 : 2;
         sum += weight * multiplier[c].real() * std::norm(complex_buffer[c]);
       }
     const double scale = 1. / grid_.n_points();
-    return sum * scale * scale;
+    return this->sum(sum) * scale * scale;
   }
 
-  GridField resampled(const FourierTransform &from, const FourierTransform &to, const GridField &field)
+  double FourierTransform::sum(const double local) const
   {
-    const PeriodicGrid &a = from.grid(), &b = to.grid();
-    if (a.lx != b.lx || a.ly != b.ly)
-      throw std::invalid_argument("resampled: the grids must cover the same rectangle");
-    const FourierTransform::Spectrum in = from.forward(field);
-    FourierTransform::Spectrum       out(to.n_coefficients(), 0.);
-    // Integer wavenumbers |kx| < kx_limit, 0 <= ky < ky_limit on both grids.
-    const int          kx_limit = (std::min(a.nx, b.nx) + 1) / 2, ky_limit = (std::min(a.ny, b.ny) + 1) / 2;
-    const unsigned int a_ny = a.ny / 2 + 1, b_ny = b.ny / 2 + 1;
-    for (int kx = 1 - kx_limit; kx < kx_limit; ++kx)
-      for (int ky = 0; ky < ky_limit; ++ky)
-        out[((kx + b.nx) % b.nx) * b_ny + ky] = in[((kx + a.nx) % a.nx) * a_ny + ky];
-    return to.inverse(out);
+    double value = local;
+    sum_in_place(&value, 1);
+    return value;
+  }
+
+  void FourierTransform::sum_in_place(double *const values, const int n) const
+  {
+    if (split())
+      MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_SUM, communicator_);
+  }
+
+  double FourierTransform::minimum(const double local) const
+  {
+    double value = local;
+    if (split())
+      MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MIN, communicator_);
+    return value;
   }
 
   std::complex<double> derivative_factor(const Wavevector &q, const unsigned int order_x,
@@ -141,7 +232,6 @@ namespace penny
       factor *= std::complex<double>(0, q.qy);
     return factor;
   }
-
   GridField spectral_derivative(const FourierTransform &transform, const GridField &field,
                                 const unsigned int order_x, const unsigned int order_y)
   {
@@ -150,31 +240,5 @@ namespace penny
     GridField derivative;
     transform.apply(multiplier, field, derivative);
     return derivative;
-  }
-
-  std::optional<PeriodicGrid> halved(const PeriodicGrid &grid, const unsigned int smallest)
-  {
-    const auto halvable = [=](const unsigned int n) { return n == 1 || (n % 2 == 0 && n / 2 >= smallest); };
-    if (!halvable(grid.nx) || !halvable(grid.ny) || (grid.nx == 1 && grid.ny == 1))
-      return std::nullopt;
-    return PeriodicGrid{grid.nx == 1 ? 1 : grid.nx / 2, grid.ny == 1 ? 1 : grid.ny / 2, grid.lx, grid.ly};
-  }
-
-  GridField interpolated(const PeriodicGrid &coarse, const GridField &field, const PeriodicGrid &fine)
-  {
-    const unsigned int sx = fine.nx / coarse.nx, sy = fine.ny / coarse.ny;
-    GridField          result(fine.n_points());
-    for (unsigned int i = 0; i < fine.nx; ++i)
-      for (unsigned int j = 0; j < fine.ny; ++j)
-        {
-          const unsigned int a = i / sx, b = j / sy, a1 = (a + 1) % coarse.nx, b1 = (b + 1) % coarse.ny;
-          const double       tx = double(i % sx) / sx, ty = double(j % sy) / sy;
-          const auto         at = [&](const unsigned int x, const unsigned int y) {
-            return field[x * coarse.ny + y];
-          };
-          result[i * fine.ny + j] = (1 - tx) * ((1 - ty) * at(a, b) + ty * at(a, b1)) +
-                                    tx * ((1 - ty) * at(a1, b) + ty * at(a1, b1));
-        }
-    return result;
   }
 } // namespace penny

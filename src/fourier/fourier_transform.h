@@ -5,11 +5,18 @@
 // Fourier convention (a Fourier series on the periodic rectangle):
 //   h(x) = sum_q h^_q exp(i q.x),  q = 2 pi (kx/lx, ky/ly),
 // so <h^2> = sum_q |h^_q|^2.
+//
+// A grid may be split over the ranks of an MPI communicator (FFTW's MPI
+// interface): each rank then holds a slab of consecutive x rows of every
+// field, and its share of the spectrum.
 #pragma once
 
+#include <mpi.h>
+
+#include <array>
 #include <complex>
 #include <functional>
-#include <optional>
+#include <utility>
 #include <vector>
 
 namespace penny
@@ -29,6 +36,8 @@ namespace penny
   // A square grid of n x n points on a side `length`.
   PeriodicGrid square_grid(unsigned int n, double length);
 
+  // A field's values at the grid points, or at a slab of rows of a grid
+  // split over ranks (FourierTransform::first_row, n_rows).
   using GridField = std::vector<double>;
 
   // A wavevector of the grid's spectrum: integer wavenumbers (kx in
@@ -44,6 +53,10 @@ namespace penny
     double norm() const;
   };
 
+  // The wavevector of the integer wavenumbers (kx, ky) stored at index i in
+  // x (0 <= i < nx, kx = i or i - nx) and ky (0 <= ky <= ny/2).
+  Wavevector wavevector(const PeriodicGrid &grid, unsigned int i, unsigned int ky);
+
   // How FFTW chooses its algorithm for a grid. `estimate` picks it without
   // timing runs: the same algorithm, so the same rounding, in every run and on
   // every rank of the same hardware. `measure` times candidates when the
@@ -58,22 +71,55 @@ namespace penny
   };
 
   // Real-to-complex FFTs (FFTW, r2c/c2r) on one grid. The spectrum holds the
-  // half plane ky >= 0, nx x (ny/2 + 1) coefficients in FFTW's layout; the
-  // other half is the complex conjugate (Hermitian symmetry of a real field).
-  // Plans and work arrays belong to the object: it is not thread-safe.
+  // half plane ky >= 0, nx x (ny/2 + 1) coefficients; the other half is the
+  // complex conjugate (Hermitian symmetry of a real field). On one rank the
+  // coefficients are in FFTW's layout (kx the slow index). On a communicator
+  // of several ranks the grid is split: fields hold the rank's rows, the
+  // transforms are FFTW's MPI plans with transposed output (each rank holds
+  // whole lines of constant ky, kx the fast index), which saves two global
+  // transposes per convolution; every Spectrum (forward, tabulate, inverse)
+  // is the rank's share in that layout, and wavevector() tells what each
+  // coefficient is. Plans and work arrays belong to the object: it is not
+  // thread-safe, and on several ranks every member that transforms or sums
+  // is collective.
   class FourierTransform
   {
   public:
     using Spectrum = std::vector<std::complex<double>>;
 
-    explicit FourierTransform(const PeriodicGrid &grid, Planning planning = Planning::estimate);
+    explicit FourierTransform(const PeriodicGrid &grid, Planning planning = Planning::estimate,
+                              MPI_Comm communicator = MPI_COMM_SELF);
     ~FourierTransform();
     FourierTransform(const FourierTransform &)            = delete;
     FourierTransform &operator=(const FourierTransform &) = delete;
 
     const PeriodicGrid &grid() const { return grid_; }
-    std::size_t         n_coefficients() const { return std::size_t(grid_.nx) * (grid_.ny / 2 + 1); }
-    Wavevector          wavevector(std::size_t coefficient) const;
+    MPI_Comm            communicator() const { return communicator_; }
+    // Whether the grid is split over more than one rank.
+    bool split() const { return !row_starts.empty(); }
+
+    // This rank's rows, x indices first_row() ... first_row() + n_rows() - 1
+    // (all of them on one rank; possibly none on a split grid).
+    unsigned int first_row() const { return first_row_; }
+    unsigned int n_rows() const { return n_rows_; }
+    std::size_t  n_local_points() const { return std::size_t(n_rows_) * grid_.ny; }
+    // Split grids: this rank's lines of the spectrum, ky = first_line() ...
+    // first_line() + n_lines() - 1, each of nx coefficients (kx at index i as
+    // in wavevector(grid, i, ky)).
+    unsigned int first_line() const { return first_line_; }
+    unsigned int n_lines() const { return n_coefficients_ / grid_.nx; }
+    // The ranks of the communicator (1 unless split), this one among them, the
+    // rows of each, the rank that holds row i of a field and the rank that
+    // holds the spectrum's line ky.
+    int                                   n_ranks() const;
+    int                                   rank() const { return rank_; }
+    std::pair<unsigned int, unsigned int> rows_of(int rank) const;
+    int                                   row_owner(unsigned int i) const;
+    int                                   line_owner(unsigned int ky) const;
+
+    // This rank's coefficients and what each stands for.
+    std::size_t n_coefficients() const { return n_coefficients_; }
+    Wavevector  wavevector(std::size_t coefficient) const;
 
     // h^_q = (1/(nx ny)) sum_x h(x) exp(-i q.x).
     Spectrum forward(const GridField &field) const;
@@ -87,42 +133,63 @@ namespace penny
     // out = F^-1[m(q) F[in]]; `out` may be `in`.
     void apply(const Spectrum &multiplier, const GridField &in, GridField &out) const;
 
-    // The same in place on the transform's own real array (nx ny values in the
-    // layout of GridField), for iterative solvers that fill it, convolve and
-    // read it back without the two copies of apply().
-    double *work_array() const { return real_buffer; }
-    void    convolve_work_array(const Spectrum &multiplier) const;
+    // The same in place on the transform's own real array, for iterative
+    // solvers that fill it, convolve and read it back without the two copies
+    // of apply(). Its rows are row_stride() values apart: ny on one rank, the
+    // 2 (ny/2 + 1) of FFTW's in-place MPI layout on a split grid;
+    // for_each_point walks them.
+    double     *work_array() const { return real_buffer; }
+    std::size_t row_stride() const { return row_stride_; }
+    // f(i, w) for each local point: i its index in a GridField, w in the work array.
+    template <typename Function> void for_each_point(Function &&f) const
+    {
+      for (std::size_t row = 0, i = 0; row < n_rows_; ++row)
+        for (std::size_t j = 0, w = row * row_stride_; j < grid_.ny; ++j, ++i, ++w)
+          f(i, w);
+    }
+    void convolve_work_array(const Spectrum &multiplier) const;
     // sum_q m(q) |f^_q|^2 over the whole spectrum (both halves) of the field f
     // in the work array, by one r2c transform: for a real even m this is the
     // mean <f M f> of the operator M = F^-1 m F (Parseval). The work array is lost.
     double quadratic_form_of_work_array(const Spectrum &multiplier) const;
+
+    // Sums and the least value over the ranks of the communicator of values
+    // local to each (the value itself on one rank): the same on every rank.
+    double sum(double local) const;
+    // Several sums in one reduction.
+    template <typename... Values> std::array<double, sizeof...(Values)> sums(const Values... local) const
+    {
+      std::array<double, sizeof...(Values)> values{{double(local)...}};
+      sum_in_place(values.data(), values.size());
+      return values;
+    }
+    double minimum(double local) const;
+    // Whether this rank holds the first row: it alone adds a term common to
+    // all ranks to a sum over ranks.
+    bool holds_first_row() const { return first_row_ == 0 && n_rows_ > 0; }
 
     // Convolutions (one r2c and one c2r transform each) done so far, by apply
     // and convolve_work_array: the cost measure of iterative solvers.
     std::size_t convolutions() const { return n_convolutions; }
 
   private:
-    PeriodicGrid          grid_;
-    double               *real_buffer;
-    std::complex<double> *complex_buffer;
-    void                 *forward_plan;
-    void                 *inverse_plan;
-    mutable std::size_t   n_convolutions = 0;
+    void sum_in_place(double *values, int n) const;
+
+    PeriodicGrid grid_;
+    MPI_Comm     communicator_;
+    int          rank_;
+    unsigned int first_row_, n_rows_;
+    // Split grids: where each rank's rows and spectrum lines start (one entry
+    // per rank and the end); both empty on one rank.
+    std::vector<unsigned int> row_starts, line_starts;
+    unsigned int              first_line_ = 0;
+    std::size_t               n_coefficients_, row_stride_;
+    double                   *real_buffer;
+    std::complex<double>     *complex_buffer;
+    void                     *forward_plan;
+    void                     *inverse_plan;
+    mutable std::size_t       n_convolutions = 0;
   };
-
-  // The field sampled on another grid of the same rectangle by its Fourier
-  // series, the modes the coarser of the two grids cannot hold (their Nyquist
-  // modes too) dropped: exact for fields band-limited to the coarser grid.
-  GridField resampled(const FourierTransform &from, const FourierTransform &to, const GridField &field);
-
-  // The grid halved in each direction of more than one point, or nothing if
-  // a side is odd or its half would have fewer than `smallest` points.
-  std::optional<PeriodicGrid> halved(const PeriodicGrid &grid, unsigned int smallest);
-
-  // A field on `fine` (twice `coarse` in each direction of more than one
-  // point) by bilinear interpolation, periodic: each value lies between
-  // those of neighbouring coarse points, so a field >= 0 stays >= 0.
-  GridField interpolated(const PeriodicGrid &coarse, const GridField &field, const PeriodicGrid &fine);
 
   // The Fourier factor of d^(ox + oy)/dx^ox dy^oy, (i qx)^ox (i qy)^oy, zero
   // on a Nyquist component of odd order (its sine part is not on the grid).

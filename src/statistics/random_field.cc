@@ -1,7 +1,5 @@
 #include "statistics/random_field.h"
 
-#include <fftw3.h>
-
 #include <algorithm>
 #include <cmath>
 #include <numeric>
@@ -39,9 +37,11 @@ namespace penny
       return std::polar(r, 2 * M_PI * u2);
     }
 
-    double mean_square(const GridField &field)
+    // <f^2> over the grid (its local rows on a split grid).
+    double mean_square(const FourierTransform &transform, const GridField &field)
     {
-      return std::inner_product(field.begin(), field.end(), field.begin(), 0.) / field.size();
+      return transform.sum(std::inner_product(field.begin(), field.end(), field.begin(), 0.)) /
+             transform.grid().n_points();
     }
   } // namespace
 
@@ -110,20 +110,23 @@ namespace penny
 
   FieldMoments sampled_moments(const FourierTransform &transform, const GridField &field)
   {
-    const double mean = std::accumulate(field.begin(), field.end(), 0.) / field.size();
-    return {mean_square(field) - mean * mean, mean_square(spectral_derivative(transform, field, 1, 0)),
-            mean_square(spectral_derivative(transform, field, 2, 0)),
-            mean_square(spectral_derivative(transform, field, 1, 1))};
+    const double mean =
+        transform.sum(std::accumulate(field.begin(), field.end(), 0.)) / transform.grid().n_points();
+    const auto derivative_square = [&](const unsigned int order_x, const unsigned int order_y) {
+      return mean_square(transform, spectral_derivative(transform, field, order_x, order_y));
+    };
+    return {mean_square(transform, field) - mean * mean, derivative_square(1, 0), derivative_square(2, 0),
+            derivative_square(1, 1)};
   }
 
   LatticeMoments lattice_moments(const PeriodicGrid &grid, const PowerSpectrum &spectrum)
   {
-    const FourierTransform transform(grid);
-    const double           cell   = (2 * M_PI / grid.lx) * (2 * M_PI / grid.ly);
-    double                 sum[4] = {0, 0, 0, 0}, sum_of_squares[4] = {0, 0, 0, 0};
-    for (std::size_t c = 0; c < transform.n_coefficients(); ++c)
+    // The modes in FFTW's serial order, kx the slow index; no grid is held.
+    const double cell   = (2 * M_PI / grid.lx) * (2 * M_PI / grid.ly);
+    double       sum[4] = {0, 0, 0, 0}, sum_of_squares[4] = {0, 0, 0, 0};
+    for (std::size_t c = 0; c < std::size_t(grid.nx) * (grid.ny / 2 + 1); ++c)
       {
-        const Wavevector q = transform.wavevector(c);
+        const Wavevector q = wavevector(grid, c / (grid.ny / 2 + 1), c % (grid.ny / 2 + 1));
         if ((q.kx == 0 && q.ky == 0) || q.nyquist_x || q.nyquist_y)
           continue;
         // A stored coefficient with ky > 0 stands for itself and its conjugate.

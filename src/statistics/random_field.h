@@ -42,7 +42,9 @@ namespace penny
   FourierTransform::Spectrum gaussian_spectrum(const FourierTransform &transform,
                                                const PowerSpectrum &spectrum, std::uint64_t seed);
 
-  // The field itself (m): F^-1 of gaussian_spectrum.
+  // The field itself (m): F^-1 of gaussian_spectrum. On a grid split over
+  // ranks each rank draws only its own coefficients (each is keyed on its
+  // wavevector), so the field is the serial one to rounding.
   GridField gaussian_field(const FourierTransform &transform, const PowerSpectrum &spectrum,
                            std::uint64_t seed);
 
@@ -59,7 +61,8 @@ namespace penny
   // The moments of an isotropic field from its profile moments: m22 = m4/3.
   FieldMoments isotropic_moments(double m0, double m2, double m4);
 
-  // The sampled mean squares of one field (spectral derivatives).
+  // The sampled mean squares of one field (spectral derivatives); collective
+  // on a split grid.
   FieldMoments sampled_moments(const FourierTransform &transform, const GridField &field);
 
   // Their expectation for a field of gaussian_spectrum, the lattice sums

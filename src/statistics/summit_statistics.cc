@@ -109,6 +109,9 @@ namespace penny
 
   std::vector<Summit> find_summits(const FourierTransform &transform, const GridField &field)
   {
+    if (transform.split())
+      throw std::invalid_argument("find_summits: summits need their neighbours on the whole grid, and the "
+                                  "grid is split over ranks");
     const PeriodicGrid &grid = transform.grid();
     const int           nx = grid.nx, ny = grid.ny;
     const double        dx = grid.lx / nx, dy = grid.ly / ny, cell = std::min(dx, dy);

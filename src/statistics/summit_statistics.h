@@ -37,7 +37,8 @@ namespace penny
   // A grid maximum whose iteration does not reach a maximum (-H positive
   // definite) within two cells is not a summit: on a nearly flat ridge oblique
   // to the grid the samples rise and fall with the distance from the crest.
-  // Grid maxima that reach the same summit count once.
+  // Grid maxima that reach the same summit count once. The whole field:
+  // std::invalid_argument on a grid split over ranks.
   std::vector<Summit> find_summits(const FourierTransform &transform, const GridField &field);
 
   // Equal height bins [min, max) for the summit height distribution.

@@ -1,0 +1,240 @@
+// A grid split over the ranks of MPI_COMM_WORLD against the same grid on
+// each rank alone: the transforms, the random fields, the moves between
+// grids of nested iteration and the contact solves with and without
+// adhesion, at prescribed mean pressure and mean gap; what needs the whole
+// field refuses a split grid. Run on 1 rank (the split transform is then the
+// serial one) and on 2.
+#define BOOST_TEST_MODULE split_grid
+#define BOOST_TEST_NO_MAIN
+#include "contact/contact_geometry.h"
+#include "contact/contact_path.h"
+#include "contact/half_space_contact.h"
+#include "fourier/grid_resampling.h"
+#include "statistics/random_field.h"
+#include "statistics/roughness.h"
+#include "statistics/summit_statistics.h"
+
+#include <boost/test/unit_test.hpp>
+
+#include <algorithm>
+#include <cmath>
+
+using namespace penny;
+
+namespace
+{
+  const MPI_Comm world = MPI_COMM_WORLD;
+
+  // This rank's rows of a field on the whole grid.
+  GridField local_rows(const FourierTransform &split, const GridField &field)
+  {
+    const auto begin = field.begin() + std::size_t(split.first_row()) * split.grid().ny;
+    return GridField(begin, begin + split.n_local_points());
+  }
+
+  // max |a - b| over the grid (a, b local rows), the same on every rank.
+  double largest_difference(const GridField &a, const GridField &b)
+  {
+    double difference = 0;
+    for (std::size_t i = 0; i < a.size(); ++i)
+      difference = std::max(difference, std::abs(a[i] - b[i]));
+    MPI_Allreduce(MPI_IN_PLACE, &difference, 1, MPI_DOUBLE, MPI_MAX, world);
+    return difference;
+  }
+
+  double largest_over_ranks(const double value)
+  {
+    double largest = value;
+    MPI_Allreduce(MPI_IN_PLACE, &largest, 1, MPI_DOUBLE, MPI_MAX, world);
+    return largest;
+  }
+
+  double largest_value(const GridField &field)
+  {
+    return *std::max_element(field.begin(), field.end(),
+                             [](double a, double b) { return std::abs(a) < std::abs(b); });
+  }
+
+  const double        lambda = 1e-3, E_star = 1e7;
+  const PowerSpectrum spectrum = power_law_spectrum(0.75, 2 * M_PI / lambda, 16, 1e-5);
+
+  double sqrt_V(const PeriodicGrid &grid)
+  {
+    return std::sqrt(lattice_moments(grid, pressure_spectrum(spectrum, E_star)).expected.m0);
+  }
+
+  // The solver's results on the split grid against those on each rank alone,
+  // to the solver's tolerance: the gaps and pressures within `tolerance` of
+  // the rms height and the mean pressure, the scalars within `tolerance`
+  // relative, the same points in contact to two and the iterations to one.
+  void check_equal(const HalfSpaceContact &split, const ContactSolution &s, const ContactSolution &serial,
+                   const double height_rms, const double tolerance)
+  {
+    const double            fields = tolerance, scalars = tolerance;
+    const FourierTransform &transform = split.transform();
+    BOOST_TEST(largest_difference(s.gap, local_rows(transform, serial.gap)) <= fields * height_rms);
+    BOOST_TEST(largest_difference(s.pressure, local_rows(transform, serial.pressure)) <=
+               fields * std::abs(serial.mean_pressure));
+    BOOST_TEST(std::abs(s.mean_gap - serial.mean_gap) <= scalars * serial.mean_gap);
+    BOOST_TEST(std::abs(s.mean_pressure - serial.mean_pressure) <= scalars * std::abs(serial.mean_pressure));
+    BOOST_TEST(std::abs(s.energy - serial.energy) <= scalars * std::abs(serial.energy));
+    BOOST_TEST(std::abs(s.contact_fraction - serial.contact_fraction) <= 2.0 / transform.grid().n_points());
+    BOOST_TEST(std::abs(int(s.iterations) - int(serial.iterations)) <= 1);
+  }
+} // namespace
+
+BOOST_AUTO_TEST_CASE(split_transforms_equal_serial_ones)
+{
+  // A rectangle of unequal sides and points: convolution with a complex
+  // multiplier (d/dx), the spectrum coefficient by coefficient and the
+  // quadratic form agree to rounding (1e-12 relative; measured on 2 ranks
+  // 5e-16, 3e-16).
+  const PeriodicGrid     grid{48, 40, 2 * lambda, 1.5 * lambda};
+  const FourierTransform serial(grid), split(grid, Planning::estimate, world);
+  const GridField        h          = gaussian_field(serial, spectrum, 3);
+  const auto             multiplier = [](const Wavevector &q) { return derivative_factor(q, 1, 0); };
+  GridField              serial_slope, split_slope;
+  serial.apply(serial.tabulate(multiplier), h, serial_slope);
+  split.apply(split.tabulate(multiplier), local_rows(split, h), split_slope);
+  BOOST_TEST(largest_difference(split_slope, local_rows(split, serial_slope)) <=
+             1e-12 * std::abs(largest_value(serial_slope)));
+
+  const FourierTransform::Spectrum a = serial.forward(h), b = split.forward(local_rows(split, h));
+  double                           difference = 0, largest = 0;
+  for (std::size_t c = 0; c < b.size(); ++c)
+    {
+      const Wavevector q = split.wavevector(c);
+      const auto       s = a[((q.kx + grid.nx) % grid.nx) * (grid.ny / 2 + 1) + q.ky];
+      difference         = std::max(difference, std::abs(b[c] - s));
+      largest            = std::max(largest, std::abs(s));
+    }
+  BOOST_TEST(largest_over_ranks(difference) <= 1e-12 * largest_over_ranks(largest));
+
+  const auto stiffness = [](const Wavevector &q) { return std::complex<double>(q.norm()); };
+  std::copy(h.begin(), h.end(), serial.work_array());
+  const GridField rows = local_rows(split, h);
+  split.for_each_point([&](const std::size_t i, const std::size_t w) { split.work_array()[w] = rows[i]; });
+  const double expected = serial.quadratic_form_of_work_array(serial.tabulate(stiffness));
+  BOOST_TEST(split.quadratic_form_of_work_array(split.tabulate(stiffness)) == expected,
+             boost::test_tools::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(split_gaussian_field_equals_the_serial_one)
+{
+  // Each rank draws only its own coefficients; the field is the serial one
+  // to 1e-12 of its largest value (measured on 2 ranks 3e-16), its moments
+  // to 1e-12.
+  const PeriodicGrid     grid{96, 64, 2 * lambda, 2 * lambda * 64 / 96};
+  const FourierTransform serial(grid), split(grid, Planning::estimate, world);
+  const GridField        h    = gaussian_field(serial, spectrum, realisation_seed(5, 2));
+  const GridField        rows = gaussian_field(split, spectrum, realisation_seed(5, 2));
+  BOOST_TEST(rows.size() == split.n_local_points());
+  BOOST_TEST(largest_difference(rows, local_rows(split, h)) <= 1e-12 * std::abs(largest_value(h)));
+  const FieldMoments a = sampled_moments(serial, h), b = sampled_moments(split, rows);
+  BOOST_TEST(b.m0 == a.m0, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(b.m2 == a.m2, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(b.m4 == a.m4, boost::test_tools::tolerance(1e-12));
+  BOOST_TEST(b.m22 == a.m22, boost::test_tools::tolerance(1e-12));
+}
+
+BOOST_AUTO_TEST_CASE(split_resampling_and_interpolation_equal_serial_ones)
+{
+  // Nested iteration's moves between a grid and its halved one, on grids
+  // whose halved rows fall unevenly on the ranks: the spectral resampling to
+  // rounding (1e-12 of the largest value), the interpolation exactly (the
+  // same arithmetic on the same values).
+  for (const PeriodicGrid fine : {PeriodicGrid{68, 40, lambda, lambda}, PeriodicGrid{12, 1, lambda, lambda}})
+    {
+      const PeriodicGrid     coarse = *halved(fine, 1);
+      const FourierTransform serial_fine(fine), serial_coarse(coarse);
+      const FourierTransform split_fine(fine, Planning::estimate, world),
+          split_coarse(coarse, Planning::estimate, world);
+      const GridField h          = gaussian_field(serial_fine, spectrum, 9);
+      const GridField down       = resampled(serial_fine, serial_coarse, h);
+      const GridField split_down = resampled(split_fine, split_coarse, local_rows(split_fine, h));
+      BOOST_TEST(largest_difference(split_down, local_rows(split_coarse, down)) <=
+                 1e-12 * std::abs(largest_value(down)));
+      const GridField up = interpolated(serial_coarse, down, serial_fine);
+      BOOST_TEST(largest_difference(interpolated(split_coarse, local_rows(split_coarse, down), split_fine),
+                                    local_rows(split_fine, up)) == 0);
+      const GridField back = resampled(split_coarse, split_fine, split_down);
+      BOOST_TEST(
+          largest_difference(back, local_rows(split_fine, resampled(serial_coarse, serial_fine, down))) <=
+          1e-12 * std::abs(largest_value(down)));
+    }
+}
+
+BOOST_AUTO_TEST_CASE(split_solves_without_adhesion_equal_serial_ones)
+{
+  // 256^2 at 2 sqrt(V): a cold start (nested iteration on 128^2, the halved
+  // grid split too) at prescribed mean pressure, and a solve at 1.2 times
+  // the mean gap it found. Equal to the tolerance 1e-10 (measured on 2
+  // ranks: fields 2e-15, scalars 4e-15, the same iterations).
+  const PeriodicGrid     grid = square_grid(256, lambda);
+  const FourierTransform serial_transform(grid), split_transform(grid, Planning::estimate, world);
+  const GridField        h = gaussian_field(serial_transform, spectrum, 7);
+  const HalfSpaceContact serial(serial_transform, h, E_star),
+      split(split_transform, local_rows(split_transform, h), E_star);
+  const ContactSolverControl control{1000, 1e-10};
+  const double               h_rms = std::sqrt(sampled_moments(serial_transform, h).m0);
+
+  const ContactSolution a = serial.solve(2 * sqrt_V(grid), control),
+                        b = split.solve(2 * sqrt_V(grid), control);
+  BOOST_TEST(b.coarse_iterations > 0);
+  check_equal(split, b, a, h_rms, control.tolerance);
+
+  const ContactSolution c = serial.solve_at_mean_gap(1.2 * a.mean_gap, control),
+                        d = split.solve_at_mean_gap(1.2 * a.mean_gap, control);
+  check_equal(split, d, c, h_rms, control.tolerance);
+}
+
+BOOST_AUTO_TEST_CASE(split_solves_with_adhesion_equal_serial_ones)
+{
+  // 128^2, a cohesive zone of 5 grid spacings and a strength sqrt(V)/2, from
+  // the adhesionless state at 2 sqrt(V): at that mean pressure and at 1.2
+  // times its mean gap. Equal to the tolerance 1e-10 (measured on 2 ranks:
+  // fields 7e-16, the energy 3e-13, the same iterations).
+  const PeriodicGrid     grid = square_grid(128, lambda);
+  const FourierTransform serial_transform(grid), split_transform(grid, Planning::estimate, world);
+  const GridField        h        = gaussian_field(serial_transform, spectrum, 11);
+  const double           strength = sqrt_V(grid) / 2, zone = 5 * lambda / 128;
+  const double           w = M_PI * strength * strength * zone / E_star;
+  const Adhesion         adhesion{w, w / strength};
+  const HalfSpaceContact serial(serial_transform, h, E_star, adhesion),
+      split(split_transform, local_rows(split_transform, h), E_star, adhesion);
+  const HalfSpaceContact     start(serial_transform, h, E_star);
+  const ContactSolverControl control{1000, 1e-10};
+  const double               h_rms = std::sqrt(sampled_moments(serial_transform, h).m0);
+  const GridField            gap   = start.solve(2 * sqrt_V(grid), control).gap;
+
+  const ContactSolution a = serial.solve(2 * sqrt_V(grid), control, gap),
+                        b = split.solve(2 * sqrt_V(grid), control, local_rows(split_transform, gap));
+  check_equal(split, b, a, h_rms, control.tolerance);
+  const ContactSolution c = serial.solve_at_mean_gap(1.2 * a.mean_gap, control, gap),
+                        d = split.solve_at_mean_gap(1.2 * a.mean_gap, control,
+                                                    local_rows(split_transform, gap));
+  check_equal(split, d, c, h_rms, control.tolerance);
+  BOOST_TEST(c.iterations > 0u);
+}
+
+BOOST_AUTO_TEST_CASE(errors_reach_every_rank)
+{
+  // A failure decided on reduced quantities is thrown on every rank (else
+  // this test would hang), and what needs the whole field refuses a split grid.
+  const PeriodicGrid     grid = square_grid(64, lambda);
+  const FourierTransform split_transform(grid, Planning::estimate, world);
+  const GridField        h = gaussian_field(split_transform, spectrum, 13);
+  const HalfSpaceContact split(split_transform, h, E_star);
+  BOOST_CHECK_THROW(split.solve(sqrt_V(grid), {2, 1e-14}), ContactSolverFailure);
+  BOOST_CHECK_THROW(split.solve(-1, {100, 1e-10}), std::invalid_argument);
+  GridField with_nan = h;
+  if (split_transform.holds_first_row())
+    with_nan[0] = std::nan("");
+  BOOST_CHECK_THROW(HalfSpaceContact(split_transform, with_nan, E_star), std::invalid_argument);
+  if (split_transform.split())
+    {
+      BOOST_CHECK_THROW(ContactPath(split, "loading", {100, 1e-10}), std::invalid_argument);
+      BOOST_CHECK_THROW(find_summits(split_transform, h), std::invalid_argument);
+      BOOST_CHECK_THROW(contact_topology(grid, h), std::invalid_argument);
+    }
+}
