@@ -2,6 +2,7 @@
 
 #include "contact/extrapolation.h"
 #include "contact/half_space.h"
+#include "fourier/grid_resampling.h"
 #include "problems/random_surfaces.h"
 #include "statistics/random_field.h"
 #include "statistics/summit_statistics.h"
