@@ -1,0 +1,260 @@
+#!/usr/bin/python3
+"""The verification report: runs the verifying scenes and writes the evidence.
+
+    /usr/bin/python3 postprocess/verification_report.py BUILD OUT [-np N] [--prms DIR] [--rerun] [NAME ...]
+
+Runs every parameter file of DIR (default prms/, the shipped full size) whose
+scene has a verdict (a Verification subsection), or the files NAME.prm named,
+each under `mpirun -np N` when N > 1, in OUT/runs/NAME/ (relative output
+folders land there). It writes OUT/report.md and OUT/report.html: the
+commit, the machine and its load, and per run the verdict (PASS, FAIL or
+error) with the scene's own line on what it compared, its error and
+tolerance, the wall time and peak memory, and the figures the run wrote.
+
+Resumable: a run whose record (OUT/runs/NAME/record.json) was made with the
+same commit, parameter file and ranks is not run again unless --rerun. A
+progress line before each run gives the time spent and an estimate of the
+time left (from earlier records of the same run where there are any).
+
+Exit status: 0 if every run passed, 1 if any failed or stopped with an error,
+2 for bad arguments."""
+import argparse
+import hashlib
+import html
+import json
+import os
+import pathlib
+import platform
+import re
+import subprocess
+import sys
+import time
+
+REPOSITORY = pathlib.Path(__file__).resolve().parent.parent
+
+# The paper's closed forms and assumptions, by the scene that checks them,
+# with the section of doc/theory.md that derives the comparison. Scenes not
+# listed verify the verifier (a solver against an exact answer).
+PAPER_CLAIMS = {
+    "penny-gap": ("K_I = 2 P sqrt(c/pi) [1 - (2/3) c^2/a^2] of the penny gap", "1"),
+    "stress-intensity-curve": ("K_I(c) of the parabolic tension", "1"),
+    "gap-size-adhesionless": ("adhesionless gap c/a = sqrt(3/2)", "1"),
+    "adhesive-minimum": ("least peak tension p0 = psi (K_Ic^4/R_p)^(1/5), psi = 1.2021", "1"),
+    "adhesive-equilibrium": ("the stable adhesive gap radius g(P)", "1"),
+    "gap-tension-curve": ("p_hat(c_hat) = (c_hat^2 + 4/sqrt(c_hat))/5 (Fig. 2)", "1"),
+    "fe-gap-area": ("the area-load curve from the closed-form g", "4"),
+    "johnson-curves": ("Johnson's sinusoid as a periodic array of gaps (Fig. 1)", "6"),
+    "jump-into-contact": ("Johnson's jump into contact", "6"),
+    "periodic-gap": ("the periodic gap against Johnson's closed form", "6"),
+    "westergaard-curve": ("Westergaard's adhesionless sinusoid", "6"),
+    "elliptical-gap": ("elliptical gaps in 3D against Green-Sneddon", "8"),
+    "elliptical-summits": ("the paper's remark on elliptical summits (Galin)", "8"),
+    "bem-bisinusoid": ("gap closure 1 - p_bar/p* = psi (2 pi)^(2/5) alpha^(4/5) near full contact", "9"),
+}
+
+
+def refuse(message):
+    sys.stderr.write(f"verification_report: error: {message}\n")
+    sys.exit(2)
+
+
+def read_arguments():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("build", type=pathlib.Path, help="the build folder holding penny")
+    parser.add_argument("out", type=pathlib.Path, help="the report folder")
+    parser.add_argument("names", nargs="*", help="parameter files to run, by name (default: every verifying one)")
+    parser.add_argument("-np", dest="ranks", type=int, default=1, help="MPI ranks of each run (default 1)")
+    parser.add_argument("--prms", type=pathlib.Path, default=REPOSITORY / "prms", help="where the parameter files are")
+    parser.add_argument("--rerun", action="store_true", help="run again what already has a record")
+    arguments = parser.parse_intermixed_args()
+    arguments.penny = (arguments.build / "penny").resolve()
+    if not os.access(arguments.penny, os.X_OK):
+        parser.error(f"no penny program in {arguments.build}")
+    if not 1 <= arguments.ranks <= 1024:
+        parser.error(f"-np = {arguments.ranks} is outside the allowed range [1, 1024]")
+    if not arguments.prms.is_dir():
+        parser.error(f"--prms {arguments.prms} is not a folder")
+    return arguments
+
+
+def scene_of(prm):
+    match = re.search(r"^\s*set\s+Scene\s*=\s*(\S+)", prm.read_text(), re.MULTILINE)
+    return match.group(1) if match else "penny-gap"
+
+
+def has_verdict(penny, scene, cache={}):
+    if scene not in cache:
+        entries = subprocess.run([str(penny), "--print-parameters", scene], capture_output=True, text=True)
+        cache[scene] = entries.returncode == 0 and "\nsubsection Verification" in "\n" + entries.stdout
+    return cache[scene]
+
+
+def selected_files(arguments):
+    if arguments.names:
+        files = [arguments.prms / (name if name.endswith(".prm") else name + ".prm") for name in arguments.names]
+        missing = [str(f) for f in files if not f.is_file()]
+        if missing:
+            refuse(f"no parameter file {', '.join(missing)}")
+        return files
+    return [f for f in sorted(arguments.prms.glob("*.prm")) if has_verdict(arguments.penny, scene_of(f))]
+
+
+def commit():
+    """The commit, with a hash of the uncommitted changes where there are any."""
+    def git(*words):
+        return subprocess.run(["git", "-C", str(REPOSITORY), *words], capture_output=True, text=True).stdout
+    head = git("rev-parse", "--short=10", "HEAD").strip() or "unknown"
+    changes = git("diff", "HEAD")
+    return head + ("+" + hashlib.sha256(changes.encode()).hexdigest()[:8] if changes else "")
+
+
+def machine():
+    model = next((line.split(":", 1)[1].strip() for line in open("/proc/cpuinfo") if line.startswith("model name")), "?")
+    memory = next((int(line.split()[1]) for line in open("/proc/meminfo") if line.startswith("MemTotal")), 0)
+    return f"{platform.node()}: {os.cpu_count()} x {model}, {memory / 2**20:.1f} GiB"
+
+
+def load_average():
+    return " ".join(f"{x:.2f}" for x in os.getloadavg())
+
+
+def run(arguments, prm, key, folder):
+    """Runs one parameter file in its folder; its record."""
+    folder.mkdir(parents=True, exist_ok=True)
+    command = [str(arguments.penny), str(prm.resolve())]
+    if arguments.ranks > 1:
+        command = ["mpirun", "-np", str(arguments.ranks)] + command
+    environment = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
+    load_before, start = load_average(), time.time()
+    with open(folder / "stdout.txt", "w") as stdout, open(folder / "stderr.txt", "w") as stderr:
+        process = subprocess.Popen(command, cwd=folder, stdout=stdout, stderr=stderr, env=environment)
+        _, status, usage = os.wait4(process.pid, 0)
+    wall = time.time() - start
+    output = (folder / "stdout.txt").read_text()
+    errors = (folder / "stderr.txt").read_text()
+    code = os.waitstatus_to_exitcode(status)
+    passed = re.search(r"^PASS: (.*)$", output, re.MULTILINE)
+    failed = re.search(r"^penny: FAIL: (.*)$", errors, re.MULTILINE)
+    if code == 0:
+        verdict, message = "PASS", passed.group(1) if passed else "ran to its results (no verdict)"
+    elif failed:
+        verdict, message = "FAIL", failed.group(1)
+    else:
+        last = [line for line in errors.splitlines() if line.strip()]
+        verdict, message = "ERROR", (last[-1] if last else f"exit status {code}")
+    results = re.search(r"^Results in (\S+?)/?:", output, re.MULTILINE)
+    return {"key": key, "scene": scene_of(prm), "verdict": verdict, "message": message, "exit": code,
+            "wall time (s)": round(wall, 2), "peak memory (MB)": round(usage.ru_maxrss / 1024),
+            "ranks": arguments.ranks, "load average before": load_before, "load average after": load_average(),
+            "results": results.group(1) if results else None, "date": time.strftime("%Y-%m-%d %H:%M:%S")}
+
+
+def write_whole(path, text):
+    """A file that is there complete or not at all (written beside, then renamed)."""
+    partial = path.with_name(path.name + ".partial")
+    partial.write_text(text)
+    os.replace(partial, path)
+
+
+def figures(folder, record):
+    if not record["results"]:
+        return []
+    return sorted(str(p.relative_to(folder.parent.parent)) for p in (folder / record["results"]).glob("*.png"))
+
+
+def numbers_in(message):
+    """The error and tolerance of a verdict line 'WHAT ERROR <= ENTRY = TOLERANCE'."""
+    match = re.search(r"([-+0-9.eE]+) (<=|>) [^=]*= ?([-+0-9.eE]+)\s*$", message)
+    return (match.group(1), match.group(3)) if match else ("", "")
+
+
+def write_report(arguments, records, header):
+    rows, claims = [], []
+    for name, folder, record in records:
+        error, tolerance = numbers_in(record["message"])
+        rows.append([name, record["scene"], record["verdict"], record["message"], error, tolerance,
+                     f"{record['wall time (s)']:.1f}", str(record["peak memory (MB)"]), str(record["ranks"]),
+                     record["load average before"], record["date"]])
+        if record["scene"] in PAPER_CLAIMS:
+            claim, section = PAPER_CLAIMS[record["scene"]]
+            claims.append([claim, f"doc/theory.md section {section}", name, record["verdict"], error, tolerance])
+    claim_columns = ["the paper's claim", "derived in", "run", "verdict", "error", "tolerance"]
+    run_columns = ["run", "scene", "verdict", "what was compared", "error", "tolerance", "wall time (s)",
+                   "peak memory (MB)", "ranks", "load average at start", "finished"]
+
+    def markdown_table(columns, table):
+        lines = ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
+        return "\n".join(lines + ["| " + " | ".join(c.replace("|", "\\|") for c in row) + " |" for row in table])
+
+    def html_table(columns, table):
+        head = "".join(f"<th>{html.escape(c)}</th>" for c in columns)
+        body = "".join("<tr>" + "".join(f'<td class="{html.escape(c)}">{html.escape(c)}</td>' for c in row) + "</tr>"
+                       for row in table)
+        return f"<table><tr>{head}</tr>{body}</table>"
+
+    passed = sum(r[2] == "PASS" for r in rows)
+    summary = f"{passed} of {len(rows)} runs passed."
+    pictures = [(name, f) for name, folder, record in records for f in figures(folder, record)]
+    markdown = ["# penny-verifier: verification report", "", *[f"- {k}: {v}" for k, v in header.items()], "",
+                summary, "", "## The paper's claims", "", markdown_table(claim_columns, claims), "",
+                "## Every run", "", markdown_table(run_columns, rows), "",
+                "Each run's screen output, tables and fields are in runs/NAME/.", ""]
+    markdown += ["## Figures", ""] + [f"![{name}]({f})" for name, f in pictures] if pictures else []
+    write_whole(arguments.out / "report.md", "\n".join(markdown) + "\n")
+    page = ["<!DOCTYPE html><html><head><meta charset='utf-8'><title>penny-verifier: verification report</title>",
+            "<style>body{font-family:sans-serif} table{border-collapse:collapse} td,th{border:1px solid #999;"
+            "padding:2px 6px} td.PASS{background:#cfc} td.FAIL,td.ERROR{background:#fcc}</style></head><body>",
+            "<h1>penny-verifier: verification report</h1><ul>",
+            *[f"<li>{html.escape(k)}: {html.escape(str(v))}</li>" for k, v in header.items()],
+            f"</ul><p>{summary}</p><h2>The paper's claims</h2>", html_table(claim_columns, claims),
+            "<h2>Every run</h2>", html_table(run_columns, rows)]
+    page += ["<h2>Figures</h2>"] + [f"<p>{html.escape(n)}<br><img src='{html.escape(f)}'></p>" for n, f in pictures]
+    write_whole(arguments.out / "report.html", "\n".join(page) + "</body></html>\n")
+    return passed == len(rows)
+
+
+def main():
+    arguments = read_arguments()
+    files = selected_files(arguments)
+    if not files:
+        refuse(f"no verifying parameter file in {arguments.prms}")
+    revision = commit()
+    header = {"commit": revision, "machine": machine(), "load average at start": load_average(),
+              "parameter files": str(arguments.prms), "ranks per run": arguments.ranks,
+              "started": time.strftime("%Y-%m-%d %H:%M:%S")}
+    records, spent = [], 0.0
+    for index, prm in enumerate(files):
+        name, folder = prm.stem, arguments.out / "runs" / prm.stem
+        key = {"commit": revision, "parameters": hashlib.sha256(prm.read_bytes()).hexdigest(),
+               "ranks": arguments.ranks}
+        previous = json.loads((folder / "record.json").read_text()) if (folder / "record.json").is_file() else None
+        if previous and previous["key"] == key and not arguments.rerun:
+            print(f"[{index + 1}/{len(files)}] {name}: {previous['verdict']} (recorded {previous['date']})", flush=True)
+            records.append((name, folder, previous))
+            continue
+        # Time left: each remaining run as long as its last record, or as the mean so far.
+        expected = []
+        for later in files[index:]:
+            record = arguments.out / "runs" / later.stem / "record.json"
+            expected.append(json.loads(record.read_text())["wall time (s)"] if record.is_file() else None)
+        known = [t for t in expected if t is not None]
+        mean = spent / max(1, len(records)) if records else (sum(known) / len(known) if known else 0)
+        left = sum(t if t is not None else mean for t in expected)
+        print(f"[{index + 1}/{len(files)}] {name}: running ({spent:.0f} s so far, about {left:.0f} s left)",
+              flush=True)
+        if folder.exists():
+            for stale in ("record.json", "stdout.txt", "stderr.txt"):
+                (folder / stale).unlink(missing_ok=True)
+        record = run(arguments, prm, key, folder)
+        spent += record["wall time (s)"]
+        write_whole(folder / "record.json", json.dumps(record, indent=1) + "\n")
+        print(f"    {record['verdict']}: {record['message']} ({record['wall time (s)']:.1f} s)", flush=True)
+        records.append((name, folder, record))
+    header["load average at end"] = load_average()
+    all_passed = write_report(arguments, records, header)
+    print(f"Report: {arguments.out / 'report.md'} and report.html")
+    return 0 if all_passed else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
