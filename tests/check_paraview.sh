@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# Usage: check_paraview.sh PENNY SCENE.prm PICTURE_SCRIPT
-# Runs a penny-gap scene that writes fields, draws the standard ParaView
+# Usage: check_paraview.sh PENNY SCENE.prm PICTURE_SCRIPT RESULT_FOLDER PNG...
+# Runs a scene that writes fields into RESULT_FOLDER, draws its ParaView
 # pictures with pvpython under Xvfb, and checks that each PNG is written and
 # not blank (many distinct colours, no single colour covering it).
 set -eu
-penny=$1 scene=$2 script=$3
+penny=$1 scene=$2 script=$3 results=$4
+shift 4
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -13,7 +14,7 @@ cd "$work"
 # tests in parallel (ParaView aborts in vtkXOpenGLRenderWindow::CreateAWindow;
 # seen twice in about fifteen runs): up to three tries, each reported.
 for attempt in 1 2 3; do
-  if timeout 300 xvfb-run -a -e xvfb.log -s "-screen 0 1280x1024x24" pvpython "$script" fields pictures \
+  if timeout 300 xvfb-run -a -e xvfb.log -s "-screen 0 1280x1024x24" pvpython "$script" "$results" pictures \
     > pictures.log 2>&1; then
     break
   fi
@@ -21,8 +22,7 @@ for attempt in 1 2 3; do
   grep -m 5 -E "ERR|FATL|error|Error" pictures.log xvfb.log || tail -5 pictures.log
   [ $attempt -lt 3 ] || { echo "FAIL: pvpython"; exit 1; }
 done
-/usr/bin/python3 - pictures picture-von-mises.png picture-sigma-zz-1e-2.png picture-sigma-zz-1e-6.png \
-  picture-opening.png <<'PY'
+/usr/bin/python3 - pictures "$@" <<'PY'
 import pathlib
 import sys
 
