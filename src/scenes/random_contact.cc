@@ -2,7 +2,9 @@
 // boundary elements against p_bar/sqrt(V), over realisations, beside the
 // statistical layer's isolated-gap law in both conventions, the same law
 // summed over the lattice's Kac-Rice summits, and Persson's erfc.
+#include "contact/half_space.h"
 #include "contact/half_space_contact.h"
+#include "output/grid_fields.h"
 #include "output/table.h"
 #include "parallel/spread_over_ranks.h"
 #include "problems/contact_solver.h"
@@ -31,6 +33,7 @@ namespace penny
       {
         input.sections(sections);
         contact_solver_section(sections, control, 1e-8);
+        fields_section(sections, write_fields);
       }
 
       void entries(Entries &entries) override
@@ -133,12 +136,36 @@ namespace penny
         publish(table, "random-contact.csv", results, log);
         log << "Tables: random-contact.csv, random-contact-summary.csv in " << results.directory().string()
             << "/\n";
+        if (write_fields)
+          write_first_realisation(transform, spectrum, E_star, loads, results);
         return {};
+      }
+
+      // The first realisation for ParaView (surface.vti): its heights, its
+      // full-contact pressure and its gap at every load. Each rank solves it
+      // (the write is collective; rank 0's counts).
+      void write_first_realisation(const FourierTransform &transform, const PowerSpectrum &spectrum,
+                                   const double E_star, const std::vector<double> &loads,
+                                   const ResultFolder &results) const
+      {
+        const HalfSpaceContact contact(
+            transform, gaussian_field(transform, spectrum, realisation_seed(input.surfaces.seed, 0)), E_star);
+        const GridField        full_contact = full_contact_pressure(transform, contact.heights(), E_star);
+        std::vector<GridField> gaps;
+        for (const double load : loads)
+          gaps.push_back(contact.solve(load, control).gap);
+        std::vector<GridFieldOutput> fields{{"height (m)", &contact.heights()},
+                                            {"full-contact pressure less its mean (Pa)", &full_contact}};
+        for (std::size_t l = 0; l < loads.size(); ++l)
+          fields.push_back({"gap at p_bar = " + Table::label(mean_pressures[l], 4) + " sqrt(V) (m)", &gaps[l]});
+        const PeriodicGrid &grid = transform.grid();
+        write_grid_fields("surface", grid.nx, grid.ny, grid.lx / grid.nx, grid.ly / grid.ny, fields, results);
       }
 
       RandomSurfaceInput   input;
       std::vector<double>  mean_pressures; // p_bar/sqrt(V)
       ContactSolverControl control;
+      bool                 write_fields;
     };
   } // namespace
 
