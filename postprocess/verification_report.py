@@ -9,15 +9,17 @@ each under `mpirun -np N` when N > 1, in OUT/runs/NAME/ (relative output
 folders land there). It writes OUT/report.md and OUT/report.html: the
 commit, the machine and its load, and per run the verdict (PASS, FAIL or
 error) with the scene's own line on what it compared, its error and
-tolerance, the wall time and peak memory, and the figures the run wrote.
+tolerance, the wall time and peak memory, and its figures: those of
+postprocess/plot_<scene>.py and, for the scenes with fields, the ParaView
+pictures (pvpython under Xvfb), drawn after the run and embedded.
 
 Resumable: a run whose record (OUT/runs/NAME/record.json) was made with the
 same commit, parameter file and ranks is not run again unless --rerun. A
 progress line before each run gives the time spent and an estimate of the
 time left (from earlier records of the same run where there are any).
 
-Exit status: 0 if every run passed, 1 if any failed or stopped with an error,
-2 for bad arguments."""
+Exit status: 0 if every run passed and its figures were drawn, 1 if any
+failed, stopped with an error or lost a figure, 2 for bad arguments."""
 import argparse
 import hashlib
 import html
@@ -56,6 +58,31 @@ PAPER_CLAIMS = {
 def refuse(message):
     sys.stderr.write(f"verification_report: error: {message}\n")
     sys.exit(2)
+
+
+# The ParaView pictures of a scene's results (pvpython under Xvfb), beside
+# the matplotlib figures postprocess/plot_<scene>.py draws.
+PARAVIEW_PICTURES = {
+    "penny-gap": "paraview_pictures.py",
+    "elliptical-gap": "paraview_elliptical_front.py",
+    "random-contact": "paraview_random_contact.py",
+}
+
+
+def figure_commands(scene, results):
+    """The commands that draw the figures of a scene's results folder."""
+    postprocess = REPOSITORY / "postprocess"
+    commands = []
+    plot = postprocess / f"plot_{scene.replace('-', '_')}.py"
+    if scene == "convergence":
+        commands.append(["/usr/bin/python3", str(postprocess / "plot_convergence.py"), str(results / "convergence"),
+                         str(results)])
+    elif plot.is_file():
+        commands.append(["/usr/bin/python3", str(plot), str(results)])
+    if scene in PARAVIEW_PICTURES and any(results.glob("*.vt?")):
+        commands.append(["xvfb-run", "-a", "-s", "-screen 0 1280x1024x24", "pvpython",
+                         str(postprocess / PARAVIEW_PICTURES[scene]), str(results)])
+    return commands
 
 
 def read_arguments():
@@ -143,10 +170,23 @@ def run(arguments, prm, key, folder):
         last = [line for line in errors.splitlines() if line.strip()]
         verdict, message = "ERROR", (last[-1] if last else f"exit status {code}")
     results = re.search(r"^Results in (\S+?)/?:", output, re.MULTILINE)
+    # The figures, from a run that finished; a script that fails is reported.
+    figure_errors = []
+    if code == 0 and results:
+        with open(folder / "figures.txt", "w") as log:
+            for command in figure_commands(scene_of(prm), folder / results.group(1)):
+                # Xvfb now and then gives pvpython no window (tests/check_paraview.sh): three tries.
+                for attempt in range(3 if command[0] == "xvfb-run" else 1):
+                    drawn = subprocess.run(command, cwd=folder, stdout=log, stderr=subprocess.STDOUT, timeout=1800)
+                    if drawn.returncode == 0:
+                        break
+                if drawn.returncode != 0:
+                    figure_errors.append(f"{pathlib.Path(command[-2]).name} exit {drawn.returncode}")
     return {"key": key, "scene": scene_of(prm), "verdict": verdict, "message": message, "exit": code,
             "wall time (s)": round(wall, 2), "peak memory (MB)": round(usage.ru_maxrss / 1024),
             "ranks": arguments.ranks, "load average before": load_before, "load average after": load_average(),
-            "results": results.group(1) if results else None, "date": time.strftime("%Y-%m-%d %H:%M:%S")}
+            "results": results.group(1) if results else None, "figure errors": figure_errors,
+            "date": time.strftime("%Y-%m-%d %H:%M:%S")}
 
 
 def write_whole(path, text):
@@ -172,7 +212,8 @@ def write_report(arguments, records, header):
     rows, claims = [], []
     for name, folder, record in records:
         error, tolerance = numbers_in(record["message"])
-        rows.append([name, record["scene"], record["verdict"], record["message"], error, tolerance,
+        message = record["message"] + "".join(f" (figure failed: {e})" for e in record["figure errors"])
+        rows.append([name, record["scene"], record["verdict"], message, error, tolerance,
                      f"{record['wall time (s)']:.1f}", str(record["peak memory (MB)"]), str(record["ranks"]),
                      record["load average before"], record["date"]])
         if record["scene"] in PAPER_CLAIMS:
@@ -192,8 +233,8 @@ def write_report(arguments, records, header):
                        for row in table)
         return f"<table><tr>{head}</tr>{body}</table>"
 
-    passed = sum(r[2] == "PASS" for r in rows)
-    summary = f"{passed} of {len(rows)} runs passed."
+    passed = sum(r[2] == "PASS" and not record["figure errors"] for r, (_, _, record) in zip(rows, records))
+    summary = f"{passed} of {len(rows)} runs passed (a run passes with its verdict and its figures)."
     pictures = [(name, f) for name, folder, record in records for f in figures(folder, record)]
     markdown = ["# penny-verifier: verification report", "", *[f"- {k}: {v}" for k, v in header.items()], "",
                 summary, "", "## The paper's claims", "", markdown_table(claim_columns, claims), "",
@@ -243,12 +284,13 @@ def main():
         print(f"[{index + 1}/{len(files)}] {name}: running ({spent:.0f} s so far, about {left:.0f} s left)",
               flush=True)
         if folder.exists():
-            for stale in ("record.json", "stdout.txt", "stderr.txt"):
+            for stale in ("record.json", "stdout.txt", "stderr.txt", "figures.txt"):
                 (folder / stale).unlink(missing_ok=True)
         record = run(arguments, prm, key, folder)
         spent += record["wall time (s)"]
         write_whole(folder / "record.json", json.dumps(record, indent=1) + "\n")
-        print(f"    {record['verdict']}: {record['message']} ({record['wall time (s)']:.1f} s)", flush=True)
+        print(f"    {record['verdict']}: {record['message']} ({record['wall time (s)']:.1f} s)"
+              + "".join(f"; figure failed: {e}" for e in record["figure errors"]), flush=True)
         records.append((name, folder, record))
     header["load average at end"] = load_average()
     all_passed = write_report(arguments, records, header)
