@@ -66,6 +66,7 @@ PARAVIEW_PICTURES = {
     "penny-gap": "paraview_pictures.py",
     "elliptical-gap": "paraview_elliptical_front.py",
     "random-contact": "paraview_random_contact.py",
+    "periodic-gap": "paraview_periodic_gap.py",
 }
 
 

@@ -158,6 +158,21 @@ namespace penny
     write_vtu(near_tip, "solution-tip", field_vtk_flags(), results, system.get_communicator());
   }
 
+  void write_displacement(const LinearElasticSystem<PlaneStrain> &system,
+                          const DisplacementVector &displacement, const ResultFolder &results)
+  {
+    VtuPieces<2> data_out;
+    data_out.attach_dof_handler(system.get_dof_handler());
+    data_out.add_data_vector(displacement, std::vector<std::string>(2, "u"), DataOut<2>::type_dof_data,
+                             std::vector<DataComponentInterpretation::DataComponentInterpretation>(
+                                 2, DataComponentInterpretation::component_is_part_of_vector));
+    data_out.build_patches(system.degree());
+    DataOutBase::VtkFlags flags;
+    flags.write_higher_order_cells = true;
+    flags.physical_units           = {{"u", "m"}};
+    write_vtu(data_out, "solution", flags, results, system.get_communicator());
+  }
+
   void write_opening_profile(const LinearElasticSystem<Axisymmetric> &system,
                              const DisplacementVector &displacement, const FaceLoad &load,
                              const double gap_radius, const double plane_strain_modulus,

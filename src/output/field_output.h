@@ -1,4 +1,5 @@
-// Fields of the penny gap for ParaView, and the face opening as a table.
+// Fields of the penny gap and the periodic gap for ParaView, and the penny
+// gap's face opening as a table.
 //
 //   solution.vtu/.pvd       the whole half model in physical coordinates (r, z) (m);
 //   solution-tip.vtu/.pvd   the cells within one gap radius of the tip, in the tip
@@ -23,6 +24,11 @@ namespace penny
 {
   void write_fields(const LinearElasticSystem<Axisymmetric> &system, const DisplacementVector &displacement,
                     const RingExtension<2> &ring, const dealii::Point<2> &tip, const ResultFolder &results);
+
+  // The periodic gap's displacement u (m) as solution.vtu/.pvd in (x, y) (m),
+  // high-order Lagrange cells of the element's degree.
+  void write_displacement(const LinearElasticSystem<PlaneStrain> &system, const DisplacementVector &displacement,
+                          const ResultFolder &results);
 
   // u_z at the ends and midpoints of the gap-face cells, beside the closed form.
   void write_opening_profile(const LinearElasticSystem<Axisymmetric> &system,

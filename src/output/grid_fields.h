@@ -13,7 +13,7 @@ namespace penny
 {
   struct GridFieldOutput
   {
-    std::string                name; // with its unit, e.g. "gap (m)"
+    std::string                name;   // with its unit, e.g. "gap (m)"
     const std::vector<double> *values; // nx ny values, index ix ny + iy
   };
 

@@ -3,6 +3,7 @@
 #include "closed_forms/periodic_array.h"
 #include "fracture/crack_extension.h"
 #include "fracture/domain_integral.h"
+#include "output/field_output.h"
 #include "output/phase_times.h"
 #include "problems/fe_sections.h"
 #include "problems/solid.h"
@@ -72,7 +73,8 @@ namespace penny
 
   PeriodicGapMeasurement solve_periodic_gap(const PeriodicGapModelParameters &model,
                                             const BuecknerTension            &load,
-                                            const std::vector<double> &ring_radii, TimerOutput &timer)
+                                            const std::vector<double> &ring_radii, TimerOutput &timer,
+                                            const ResultFolder *fields)
   {
     PeriodicGapModel         gap(model, timer);
     const auto               cosine    = BuecknerTension::unit_cosine(model.wavelength);
@@ -118,6 +120,11 @@ namespace penny
     results.n_dofs            = gap.get_system().get_dof_handler().n_dofs();
     results.relative_residual = residual;
     results.solver            = gap.get_system().solver_name();
+    if (fields)
+      {
+        TimerOutput::Scope scope(timer, "output");
+        write_displacement(gap.get_system(), u, *fields);
+      }
     return results;
   }
 

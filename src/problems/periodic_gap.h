@@ -6,6 +6,7 @@
 
 #include "fe/periodic_gap_model.h"
 #include "input/entries.h"
+#include "output/result_folder.h"
 #include "output/table.h"
 #include "problems/penny_gap.h"
 #include "searches/gap_family.h"
@@ -54,11 +55,13 @@ namespace penny
   };
 
   // One factorisation, three right-hand sides: the load, the unit cosine and
-  // the unit uniform tension (the reference of the signed K_I).
+  // the unit uniform tension (the reference of the signed K_I); with
+  // `fields`, the displacement of the load written there.
   PeriodicGapMeasurement solve_periodic_gap(const PeriodicGapModelParameters &model,
                                             const BuecknerTension            &load,
                                             const std::vector<double>        &ring_radii,
-                                            dealii::TimerOutput              &timer);
+                                            dealii::TimerOutput              &timer,
+                                            const ResultFolder               *fields = nullptr);
 
   // What the scenes that search over the half-width share: a timer of the
   // phases and the family of models of the input (J on its last ring). Every

@@ -26,6 +26,7 @@ namespace penny
       {
         periodic.sections(sections);
         gap_and_load_section(sections, gap);
+        fields_section(sections, write_fields);
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
@@ -34,8 +35,8 @@ namespace penny
         periodic.model.gap_half_width = gap.gap_ratio * periodic.model.wavelength;
         const BuecknerTension        load{periodic.model.wavelength, gap.peak_tension,
                                    gap.load_ratio * gap.peak_tension};
-        const PeriodicGapMeasurement solved =
-            solve_periodic_gap(periodic.model, load, periodic.ring_radii, timer);
+        const PeriodicGapMeasurement solved = solve_periodic_gap(periodic.model, load, periodic.ring_radii,
+                                                                 timer, write_fields ? &results : nullptr);
 
         log << "Periodic gap of Johnson's sinusoid (plane strain): K_I beside sqrt(lambda) [p* cos^2(pi "
                "c/lambda) - p_bar] sqrt(tan(pi c/lambda))\n";
@@ -74,6 +75,7 @@ namespace penny
 
       PeriodicGapInput periodic;
       GapAndLoad       gap;
+      bool             write_fields;
     };
   } // namespace
 

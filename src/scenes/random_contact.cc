@@ -157,7 +157,8 @@ namespace penny
         std::vector<GridFieldOutput> fields{{"height (m)", &contact.heights()},
                                             {"full-contact pressure less its mean (Pa)", &full_contact}};
         for (std::size_t l = 0; l < loads.size(); ++l)
-          fields.push_back({"gap at p_bar = " + Table::label(mean_pressures[l], 4) + " sqrt(V) (m)", &gaps[l]});
+          fields.push_back(
+              {"gap at p_bar = " + Table::label(mean_pressures[l], 4) + " sqrt(V) (m)", &gaps[l]});
         const PeriodicGrid &grid = transform.grid();
         write_grid_fields("surface", grid.nx, grid.ny, grid.lx / grid.nx, grid.ly / grid.ny, fields, results);
       }
