@@ -10,27 +10,20 @@ the tip-frame fields (solution-tip.vtu, coordinates (r - c)/c and z/c):
 Usage (ParaView's Python, offscreen under Xvfb):
   xvfb-run -a pvpython postprocess/paraview_pictures.py RESULT_FOLDER [PNG_FOLDER]"""
 import csv
-import pathlib
-import sys
 
 import numpy
 import paraview.simple as pv
 from paraview import servermanager
 from vtk.numpy_interface import dataset_adapter as dsa
 
-folder = pathlib.Path(sys.argv[1])
-pictures = pathlib.Path(sys.argv[2]) if len(sys.argv) > 2 else folder
-pictures.mkdir(parents=True, exist_ok=True)
+from paraview_common import folders, white_view
+
+folder, pictures = folders()
 size = [900, 600]
 
 fields = pv.XMLUnstructuredGridReader(FileName=[str(folder / "solution-tip.vtu")])
 fields.UpdatePipeline()
-view = pv.CreateView("RenderView")
-view.ViewSize = size
-view.OrientationAxesVisibility = 0
-view.CameraParallelProjection = 1
-view.Background = [1, 1, 1]
-view.UseColorPaletteForBackground = 0
+view = white_view(size)
 
 
 def frame(source, half_width, height, title):

@@ -7,41 +7,26 @@ first realisation (surface.vti):
 
 Usage (ParaView's Python, offscreen under Xvfb):
   xvfb-run -a pvpython postprocess/paraview_random_contact.py RESULT_FOLDER [PNG_FOLDER]"""
-import pathlib
 import sys
 
 import numpy
 import paraview.simple as pv
-from paraview import servermanager
-from vtk.numpy_interface import dataset_adapter as dsa
 
-folder = pathlib.Path(sys.argv[1])
-pictures = pathlib.Path(sys.argv[2]) if len(sys.argv) > 2 else folder
-pictures.mkdir(parents=True, exist_ok=True)
+from paraview_common import colour_bar, fetched, folders, look_at, save, title, white_view
+
+folder, pictures = folders()
 size = [800, 700]
 pressure = "full-contact pressure less its mean (Pa)"
 
 surface = pv.XMLImageDataReader(FileName=[str(folder / "surface.vti")])
-surface.UpdatePipeline()
-data = dsa.WrapDataObject(servermanager.Fetch(surface))
+data = fetched(surface)
 gap_names = [name for name in data.PointData.keys() if name.startswith("gap at")]
 if pressure not in data.PointData.keys() or not gap_names:
     sys.exit(f"{folder / 'surface.vti'} lacks the full-contact pressure or the gaps")
-bounds = data.GetBounds()
-side = max(bounds[1] - bounds[0], bounds[3] - bounds[2])
+x0, x1, y0, y1 = data.GetBounds()[:4]
+side = max(x1 - x0, y1 - y0)
 
-view = pv.CreateView("RenderView")
-view.ViewSize = size
-view.OrientationAxesVisibility = 0
-view.CameraParallelProjection = 1
-view.Background = [1, 1, 1]
-view.UseColorPaletteForBackground = 0
-centre = [(bounds[0] + bounds[1]) / 2, (bounds[2] + bounds[3]) / 2, 0]
-view.CameraFocalPoint = centre
-view.CameraPosition = [centre[0], centre[1], 10 * side]
-view.CameraViewUp = [0, 1, 0]
-view.CameraParallelScale = 0.62 * side
-
+view = white_view(size)
 surface_display = pv.Show(surface, view)
 surface_display.SetRepresentationType("Slice")
 pv.ColorBy(surface_display, ("POINTS", pressure))
@@ -49,18 +34,9 @@ colours = pv.GetColorTransferFunction(pressure)
 colours.ApplyPreset("Cool to Warm", True)
 largest = numpy.abs(numpy.asarray(data.PointData[pressure])).max()
 colours.RescaleTransferFunction(-largest, largest)
-bar = pv.GetScalarBar(colours, view)
-bar.Title, bar.ComponentTitle = "p_fc - mean (Pa)", ""
-bar.TitleColor = bar.LabelColor = [0, 0, 0]
-bar.WindowLocation = "Any Location"
-bar.Position = [0.88, 0.1]
-surface_display.SetScalarBarVisibility(view, True)
-
-title = pv.Text()
-title_display = pv.Show(title, view)
-title_display.Color = [0, 0, 0]
-title_display.WindowLocation = "Upper Center"
-title_display.FontSize = 13
+colour_bar(view, surface_display, colours, "p_fc - mean (Pa)", [0.88, 0.1])
+label = title(view, "")
+look_at(view, [(x0 + x1) / 2, (y0 + y1) / 2, 0], 0.62 * side, 10 * side)
 
 for k, name in enumerate(gap_names, start=1):
     share = (numpy.asarray(data.PointData[name]) > 0).mean()
@@ -69,9 +45,7 @@ for k, name in enumerate(gap_names, start=1):
     pv.ColorBy(gaps_display, None)
     gaps_display.AmbientColor = gaps_display.DiffuseColor = [0.1, 0.1, 0.1]
     gaps_display.Opacity = 0.75
-    title.Text = (f"first realisation: full-contact pressure (colour), gaps (dark) {name[len('gap at '):-4]}: "
+    label.Text = (f"first realisation: full-contact pressure (colour), gaps (dark) {name[len('gap at '):-4]}: "
                   f"{share:.3f} of the points")
-    pv.Render(view)
-    pv.SaveScreenshot(str(pictures / f"picture-gaps-{k}.png"), view, ImageResolution=size)
-    print(pictures / f"picture-gaps-{k}.png")
+    save(view, pictures / f"picture-gaps-{k}.png", size)
     pv.Hide(gaps, view)
