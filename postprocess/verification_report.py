@@ -21,6 +21,7 @@ time left (from earlier records of the same run where there are any).
 Exit status: 0 if every run passed and its figures were drawn, 1 if any
 failed, stopped with an error or lost a figure, 2 for bad arguments."""
 import argparse
+import fcntl
 import hashlib
 import html
 import json
@@ -102,6 +103,8 @@ def read_arguments():
         parser.error(f"-np = {arguments.ranks} is outside the allowed range [1, 1024]")
     if not arguments.prms.is_dir():
         parser.error(f"--prms {arguments.prms} is not a folder")
+    if arguments.out.exists() and not arguments.out.is_dir():
+        parser.error(f"the report folder {arguments.out} exists and is not a folder")
     return arguments
 
 
@@ -260,6 +263,13 @@ def main():
     files = selected_files(arguments)
     if not files:
         refuse(f"no verifying parameter file in {arguments.prms}")
+    # One report at a time in a folder (the kernel drops the lock when a run dies).
+    arguments.out.mkdir(parents=True, exist_ok=True)
+    lock = open(arguments.out / ".report.lock", "w")
+    try:
+        fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
+    except BlockingIOError:
+        refuse(f"another report is running in {arguments.out}")
     revision = commit()
     header = {"commit": revision, "machine": machine(), "load average at start": load_average(),
               "parameter files": str(arguments.prms), "ranks per run": arguments.ranks,
@@ -300,4 +310,8 @@ def main():
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    try:
+        sys.exit(main())
+    except (OSError, subprocess.SubprocessError) as error:
+        sys.stderr.write(f"verification_report: error: {error}\n")
+        sys.exit(1)
