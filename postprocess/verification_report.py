@@ -180,12 +180,13 @@ def run(arguments, prm, key, folder):
         with open(folder / "figures.txt", "w") as log:
             for command in figure_commands(scene_of(prm), folder / results.group(1)):
                 # Xvfb now and then gives pvpython no window (tests/check_paraview.sh): three tries.
-                for attempt in range(3 if command[0] == "xvfb-run" else 1):
+                for _ in range(3 if command[0] == "xvfb-run" else 1):
                     drawn = subprocess.run(command, cwd=folder, stdout=log, stderr=subprocess.STDOUT, timeout=1800)
                     if drawn.returncode == 0:
                         break
                 if drawn.returncode != 0:
-                    figure_errors.append(f"{pathlib.Path(command[-2]).name} exit {drawn.returncode}")
+                    script = next(word for word in command if word.endswith(".py"))
+                    figure_errors.append(f"{pathlib.Path(script).name} exit {drawn.returncode}")
     return {"key": key, "scene": scene_of(prm), "verdict": verdict, "message": message, "exit": code,
             "wall time (s)": round(wall, 2), "peak memory (MB)": round(usage.ru_maxrss / 1024),
             "ranks": arguments.ranks, "load average before": load_before, "load average after": load_average(),
