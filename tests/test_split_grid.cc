@@ -111,9 +111,25 @@ BOOST_AUTO_TEST_CASE(split_transforms_equal_serial_ones)
   BOOST_TEST(largest_over_ranks(difference) <= 1e-12 * largest_over_ranks(largest));
 
   const auto stiffness = [](const Wavevector &q) { return std::complex<double>(q.norm()); };
-  std::copy(h.begin(), h.end(), serial.work_array());
-  const GridField rows = local_rows(split, h);
-  split.for_each_point([&](const std::size_t i, const std::size_t w) { split.work_array()[w] = rows[i]; });
+  const auto load      = [](const FourierTransform &transform, const GridField &field) {
+    transform.for_each_point(
+        [&](const std::size_t i, const std::size_t w) { transform.work_array()[w] = field[i]; });
+  };
+  // Parseval: with m = 1 the quadratic form is the mean square (ny even and odd).
+  for (const unsigned int ny : {40u, 39u})
+    {
+      const FourierTransform one({48, ny, 2 * lambda, 1.5 * lambda});
+      const GridField        f      = gaussian_field(one, spectrum, 4);
+      double                 square = 0;
+      for (const double value : f)
+        square += value * value / f.size();
+      load(one, f);
+      BOOST_TEST(one.quadratic_form_of_work_array(one.tabulate([](const Wavevector &) { return 1.; })) ==
+                     square,
+                 boost::test_tools::tolerance(1e-12));
+    }
+  load(serial, h);
+  load(split, local_rows(split, h));
   const double expected = serial.quadratic_form_of_work_array(serial.tabulate(stiffness));
   BOOST_TEST(split.quadratic_form_of_work_array(split.tabulate(stiffness)) == expected,
              boost::test_tools::tolerance(1e-12));

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <stdexcept>
 #include <string>
@@ -168,6 +169,15 @@ namespace penny
     transform.apply(compliance, impulse, impulse);
     point_compliance = transform.sum(transform.holds_first_row() ? impulse[0] : 0);
     full_contact     = full_contact_pressure(transform, heights_, E_star);
+
+    // The halved problems of nested iteration, built once for every cold start.
+    if (const std::optional<PeriodicGrid> grid = halved(transform.grid(), 128); grid && !adhesion.active())
+      {
+        coarse_transform =
+            std::make_unique<FourierTransform>(*grid, transform.planning(), transform.communicator());
+        coarse = std::make_unique<HalfSpaceContact>(
+            *coarse_transform, resampled(transform, *coarse_transform, heights_), E_star);
+      }
   }
 
   ContactSolution HalfSpaceContact::solve(const double mean_pressure, const ContactSolverControl &control,
@@ -178,24 +188,20 @@ namespace penny
           formatted("contact solver: the mean pressure %g Pa is outside the allowed range "
                     "(0, inf) without adhesion, (-inf, inf) with it",
                     mean_pressure));
-    const std::optional<PeriodicGrid> coarse_grid = halved(transform_.grid(), 128);
     // A rank may hold no rows: whether a gap was given is decided over all ranks.
     const bool given = on_any_rank(transform_, !initial_gap.empty());
-    if (given || adhesion_.active() || !coarse_grid)
+    if (given || !coarse)
       {
         GridField gap = given ? initial_gap : GridField(heights_.size(), 0.);
         return minimise(Control::mean_pressure, mean_pressure, control, std::move(gap));
       }
-    const FourierTransform coarse_transform(*coarse_grid, Planning::estimate, transform_.communicator());
-    const HalfSpaceContact coarse(coarse_transform, resampled(transform_, coarse_transform, heights_),
-                                  E_star);
     // Only a start: its accuracy beyond the interpolation's is wasted.
     const ContactSolution start =
-        coarse.solve(mean_pressure, {control.max_iterations, std::max(control.tolerance, 1e-4)});
+        coarse->solve(mean_pressure, {control.max_iterations, std::max(control.tolerance, 1e-4)});
     ContactSolution solution = minimise(Control::mean_pressure, mean_pressure, control,
-                                        interpolated(coarse_transform, start.gap, transform_));
-    solution.coarse_iterations =
-        (start.iterations + start.coarse_iterations) * coarse_grid->n_points() / transform_.grid().n_points();
+                                        interpolated(*coarse_transform, start.gap, transform_));
+    solution.coarse_iterations = (start.iterations + start.coarse_iterations) *
+                                 coarse_transform->grid().n_points() / transform_.grid().n_points();
     return solution;
   }
 
@@ -244,9 +250,13 @@ namespace penny
     double *const work       = transform_.work_array();
     const auto    each_point = [&](auto &&f) { transform_.for_each_point(f); };
 
-    GridField                  gradient(n), previous_gradient(n, 0.), step(n), direction(n, 0.), slope(n, 0.);
+    GridField gradient(n), previous_gradient(n, 0.), step(n), direction(n, 0.);
+    GridField slope(adhesive ? n : 0); // phi'(g)
+    const auto attraction = [&](const std::size_t i) { return adhesive ? slope[i] : 0; };
     GridField                  mean_response; // P_F C P_F 1, at a prescribed mean gap
-    std::vector<unsigned char> free(n);
+    // bool, not char: a store through a char may alias anything, and the
+    // compiler would reload every array's address after each one.
+    const std::unique_ptr<bool[]> free(new bool[n]);
     double                     mu = value;
 
     // At a prescribed mean gap: shift step by a multiple of P_F C P_F 1 so
@@ -284,23 +294,36 @@ namespace penny
         direction[i] -= sums[0] / sums[1] * mean_response[i];
     };
 
-    // r.d over the grid, d copied to the work array on the way.
-    const auto slope_along_direction = [&]() {
+    // The direction d = P_F (-step + beta d), copied to the work array, and
+    // r.d over the grid (at a prescribed mean pressure in one pass).
+    const auto new_direction = [&](const double beta) {
       double slope_along = 0;
-      each_point([&](const std::size_t i, const std::size_t w) {
-        slope_along += gradient[i] * direction[i];
-        work[w] = direction[i];
-      });
+      if (fixed_load)
+        each_point([&](const std::size_t i, const std::size_t w) {
+          direction[i] = free[i] ? -step[i] + beta * direction[i] : 0;
+          slope_along += gradient[i] * direction[i];
+          work[w] = direction[i];
+        });
+      else
+        {
+          for (std::size_t i = 0; i < n; ++i)
+            direction[i] = free[i] ? -step[i] + beta * direction[i] : 0;
+          keep_mean_of_direction();
+          each_point([&](const std::size_t i, const std::size_t w) {
+            slope_along += gradient[i] * direction[i];
+            work[w] = direction[i];
+          });
+        }
       return transform_.sum(slope_along);
     };
 
     double       residual = 0, previous_product = 0;
     unsigned int iteration;
+    each_point([&](const std::size_t i, const std::size_t w) { work[w] = gap[i]; });
     for (iteration = 0;; ++iteration)
       {
-        // The gradient r = p_fc + K g + mu + phi'(g), the free set, and P_F r
-        // in the work array.
-        each_point([&](const std::size_t i, const std::size_t w) { work[w] = gap[i]; });
+        // The gradient r = p_fc + K g + mu + phi'(g) from the gap in the work
+        // array, the free set, and P_F r in the work array.
         transform_.convolve_work_array(stiffness);
         if (adhesive)
           for (std::size_t i = 0; i < n; ++i)
@@ -312,7 +335,7 @@ namespace penny
             each_point([&](const std::size_t i, const std::size_t w) {
               if (gap[i] > 0)
                 {
-                  sum += full_contact[i] + work[w] + slope[i];
+                  sum += full_contact[i] + work[w] + attraction(i);
                   ++count;
                 }
             });
@@ -320,29 +343,33 @@ namespace penny
             mu              = -sums[0] / sums[1];
           }
         each_point([&](const std::size_t i, const std::size_t w) {
-          gradient[i] = full_contact[i] + work[w] + mu + slope[i];
+          gradient[i] = full_contact[i] + work[w] + mu + attraction(i);
           free[i]     = gap[i] > 0 || gradient[i] < 0;
           work[w]     = free[i] ? gradient[i] : 0;
         });
         transform_.convolve_work_array(compliance);
-        each_point([&](const std::size_t i, const std::size_t w) { step[i] = free[i] ? work[w] : 0; });
         if (!fixed_load)
-          keep_mean_gap();
-
-        // In one pass: the residual; a point at the wall that pulls away
-        // (r < 0) but that the preconditioned step would push into it moves
-        // by the local compliance instead, -c r (c the diagonal of C), so the
-        // step stays a descent direction and the point opens; and the
-        // products of Polak-Ribiere.
-        double square = 0, product = 0, previous_overlap = 0;
-        for (std::size_t i = 0; i < n; ++i)
           {
-            square += step[i] * step[i];
-            if (free[i] && gap[i] == 0 && step[i] >= 0)
-              step[i] = point_compliance * gradient[i];
-            product += gradient[i] * step[i];
-            previous_overlap += previous_gradient[i] * step[i];
+            each_point([&](const std::size_t i, const std::size_t w) { step[i] = free[i] ? work[w] : 0; });
+            keep_mean_gap();
           }
+
+        // In one pass: the step P_F C P_F r (read from the work array at a
+        // prescribed mean pressure); the residual; a point at the wall that
+        // pulls away (r < 0) but that the preconditioned step would push into
+        // it moves by the local compliance instead, -c r (c the diagonal of
+        // C), so the step stays a descent direction and the point opens; and
+        // the products of Polak-Ribiere.
+        double square = 0, product = 0, previous_overlap = 0;
+        each_point([&](const std::size_t i, const std::size_t w) {
+          double s = fixed_load ? (free[i] ? work[w] : 0) : step[i];
+          square += s * s;
+          if (free[i] && gap[i] == 0 && s >= 0)
+            s = point_compliance * gradient[i];
+          step[i] = s;
+          product += gradient[i] * s;
+          previous_overlap += previous_gradient[i] * s;
+        });
         const auto sums = transform_.sums(square, product, previous_overlap);
         residual        = std::sqrt(sums[0] / n_points) / height_scale;
         if (residual <= solver.tolerance)
@@ -354,45 +381,35 @@ namespace penny
 
         // Polak-Ribiere, never negative; a restart where that is no descent.
         const double beta = previous_product > 0 ? std::max(0., (sums[1] - sums[2]) / previous_product) : 0;
-        for (std::size_t i = 0; i < n; ++i)
-          direction[i] = free[i] ? -step[i] + beta * direction[i] : 0;
-        if (!fixed_load)
-          keep_mean_of_direction();
-        double slope_along = slope_along_direction();
+        double       slope_along = new_direction(beta);
         if (!(slope_along < 0))
-          {
-            for (std::size_t i = 0; i < n; ++i)
-              direction[i] = -step[i];
-            if (!fixed_load)
-              keep_mean_of_direction();
-            slope_along = slope_along_direction();
-          }
+          slope_along = new_direction(0);
 
         const double curvature = n_points * transform_.quadratic_form_of_work_array(stiffness);
         const double alpha =
             step_length(transform_, adhesion_, slope_along, curvature, gap, direction, slope);
 
-        // The step, clipped at the wall; a clipped point forgets its direction.
+        // The step, clipped at the wall (a clipped point forgets its
+        // direction), and the new gap in the work array.
         bool   clipped      = false;
         double smallest_gap = std::numeric_limits<double>::infinity();
-        for (std::size_t i = 0; i < n; ++i)
-          {
-            const double g = gap[i] + alpha * direction[i];
-            if (g <= 0)
-              {
-                gap[i]       = 0;
-                direction[i] = 0;
-                clipped      = true;
-              }
-            else
-              gap[i] = g;
-            smallest_gap = std::min(smallest_gap, gap[i]);
-          }
+        each_point([&](const std::size_t i, const std::size_t w) {
+          const double g = gap[i] + alpha * direction[i];
+          if (g <= 0)
+            {
+              gap[i]       = 0;
+              direction[i] = 0;
+              clipped      = true;
+            }
+          else
+            gap[i] = g;
+          smallest_gap = std::min(smallest_gap, gap[i]);
+          work[w]      = gap[i];
+        });
         if (!fixed_load && on_any_rank(transform_, clipped))
           {
             const double scale = value / mean(transform_, gap);
-            for (double &g : gap)
-              g *= scale;
+            each_point([&](const std::size_t i, const std::size_t w) { work[w] = gap[i] *= scale; });
           }
         if (fixed_load && !(value > 0) && transform_.minimum(smallest_gap) >= adhesion_.reach())
           throw std::runtime_error(
@@ -413,8 +430,8 @@ namespace penny
     double elastic = 0, interaction = 0, contact = 0;
     for (std::size_t i = 0; i < n; ++i)
       {
-        solution.pressure[i] = (gap[i] > 0 ? 0 : std::max(gradient[i], 0.)) - slope[i];
-        elastic += (gap[i] + heights_[i]) * (gradient[i] - mu - slope[i]);
+        solution.pressure[i] = (gap[i] > 0 ? 0 : std::max(gradient[i], 0.)) - attraction(i);
+        elastic += (gap[i] + heights_[i]) * (gradient[i] - mu - attraction(i));
         if (adhesive)
           interaction += adhesion_.energy(gap[i]);
         contact += gap[i] == 0;

@@ -27,6 +27,7 @@
 #include "contact/adhesion.h"
 #include "contact/half_space.h"
 
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -121,6 +122,10 @@ namespace penny
     FourierTransform::Spectrum stiffness;    // (E*/2) |q|, zero at q = 0
     FourierTransform::Spectrum compliance;   // its inverse, 2/(E* q_min) at q = 0
     double point_compliance; // the diagonal of C: the displacement of a point under its own unit load
+    // Without adhesion: the problem on the grid halved in each direction, for
+    // nested iteration (none if the grid cannot be halved).
+    std::unique_ptr<const FourierTransform> coarse_transform;
+    std::unique_ptr<const HalfSpaceContact> coarse;
   };
 
   // One load of a sweep: the non-contact share of the grid points, the mean

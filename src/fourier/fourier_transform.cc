@@ -51,33 +51,35 @@ namespace penny
 
   FourierTransform::FourierTransform(const PeriodicGrid &grid, const Planning planning,
                                      const MPI_Comm communicator)
-      : grid_(grid), communicator_(communicator), rank_(0), first_row_(0), n_rows_(grid.nx),
-        n_coefficients_(std::size_t(grid.nx) * (grid.ny / 2 + 1)), row_stride_(grid.ny)
+      : grid_(grid), planning_(planning), communicator_(communicator), rank_(0), first_row_(0), n_rows_(grid.nx),
+        n_coefficients_(std::size_t(grid.nx) * (grid.ny / 2 + 1))
   {
     if (grid.nx == 0 || grid.ny == 0 || !(grid.lx > 0) || !(grid.ly > 0))
       throw std::invalid_argument("FourierTransform: the grid needs nx, ny >= 1 points and lx, ly > 0");
     int ranks = 1;
     if (communicator != MPI_COMM_SELF)
       MPI_Comm_size(communicator, &ranks);
-    // FFTW_MEASURE overwrites the arrays while it plans; they hold nothing yet.
-    const unsigned int flags = planning == Planning::estimate ? FFTW_ESTIMATE : FFTW_MEASURE;
+    // In place, rows padded to 2 (ny/2 + 1) values (about a tenth faster than
+    // out of place at 2048^2). FFTW_MEASURE overwrites the array while it
+    // plans; it holds nothing yet.
+    const unsigned int flags   = planning == Planning::estimate ? FFTW_ESTIMATE : FFTW_MEASURE;
+    const ptrdiff_t    n_lines = grid.ny / 2 + 1;
+    row_stride_                = 2 * n_lines;
     if (ranks == 1)
       {
-        real_buffer    = fftw_alloc_real(grid.n_points());
-        complex_buffer = reinterpret_cast<std::complex<double> *>(fftw_alloc_complex(n_coefficients_));
+        real_buffer    = fftw_alloc_real(2 * n_coefficients_);
+        complex_buffer = reinterpret_cast<std::complex<double> *>(real_buffer);
         auto *spectrum = reinterpret_cast<fftw_complex *>(complex_buffer);
         forward_plan   = fftw_plan_dft_r2c_2d(grid.nx, grid.ny, real_buffer, spectrum, flags);
         inverse_plan   = fftw_plan_dft_c2r_2d(grid.nx, grid.ny, spectrum, real_buffer, flags);
         return;
       }
-    // In place on a slab of rows, each padded to 2 (ny/2 + 1) values; the
-    // spectrum's lines ky split over the ranks as the omitted transpose left
-    // them. FFTW's MPI planner times collectively, so FFTW_MEASURE picks one
-    // algorithm on every rank.
+    // A slab of rows per rank; the spectrum's lines ky split over the ranks
+    // as the omitted transpose left them. FFTW's MPI planner times
+    // collectively, so FFTW_MEASURE picks one algorithm on every rank.
     MPI_Comm_rank(communicator, &rank_);
     static const bool initialised = (fftw_mpi_init(), true);
     (void)initialised;
-    const ptrdiff_t n_lines = grid.ny / 2 + 1;
     ptrdiff_t       rows, row, lines, line;
     const ptrdiff_t complex_size =
         fftw_mpi_local_size_2d_transposed(grid.nx, n_lines, communicator, &rows, &row, &lines, &line);
@@ -85,7 +87,6 @@ namespace penny
     n_rows_         = rows;
     first_line_     = lines > 0 ? line : 0;
     n_coefficients_ = std::size_t(lines) * grid.nx;
-    row_stride_     = 2 * n_lines;
     row_starts      = block_starts(communicator, n_rows_);
     line_starts     = block_starts(communicator, lines);
     real_buffer     = fftw_alloc_real(2 * std::max<ptrdiff_t>(complex_size, 1));
@@ -102,8 +103,6 @@ namespace penny
     fftw_destroy_plan(static_cast<fftw_plan>(forward_plan));
     fftw_destroy_plan(static_cast<fftw_plan>(inverse_plan));
     fftw_free(real_buffer);
-    if (!split())
-      fftw_free(complex_buffer);
   }
 
   int FourierTransform::n_ranks() const
@@ -180,23 +179,28 @@ namespace penny
     for (std::size_t c = 0; c < multiplier.size(); ++c)
       complex_buffer[c] *= scale * multiplier[c];
     fftw_execute(static_cast<fftw_plan>(inverse_plan));
-    ++n_convolutions;
   }
 
   double FourierTransform::quadratic_form_of_work_array(const Spectrum &multiplier) const
   {
     fftw_execute(static_cast<fftw_plan>(forward_plan));
-    // Each coefficient with 0 < ky < ny/2 stands for itself and its conjugate at -q.
-    const unsigned int n_y = grid_.ny / 2 + 1;
-    double             sum = 0;
+    const auto term = [&](const std::size_t c) { return multiplier[c].real() * std::norm(complex_buffer[c]); };
+    double     sum  = 0;
     for (std::size_t c = 0; c < multiplier.size(); ++c)
-      {
-        const unsigned int ky     = split() ? first_line_ + c / grid_.nx : c % n_y;
-        const double       weight = ky == 0 || (grid_.ny % 2 == 0 && ky == grid_.ny / 2) ? 1 : 2;
-        sum += weight * multiplier[c].real() * std::norm(complex_buffer[c]);
-      }
+      sum += term(c);
+    // Each coefficient stands for itself and its conjugate at -q, except on
+    // the lines ky = 0 and ky = ny/2 (ny even), which hold both.
+    std::vector<unsigned int> own_lines{0};
+    if (grid_.ny % 2 == 0)
+      own_lines.push_back(grid_.ny / 2);
+    double on_own_lines = 0;
+    for (const unsigned int ky : own_lines)
+      if (line_owner(ky) == rank_)
+        for (unsigned int i = 0; i < grid_.nx; ++i)
+          on_own_lines += term(split() ? std::size_t(ky - first_line_) * grid_.nx + i
+                                       : std::size_t(i) * (grid_.ny / 2 + 1) + ky);
     const double scale = 1. / grid_.n_points();
-    return this->sum(sum) * scale * scale;
+    return this->sum(2 * sum - on_own_lines) * scale * scale;
   }
 
   double FourierTransform::sum(const double local) const

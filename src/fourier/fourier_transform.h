@@ -94,6 +94,7 @@ namespace penny
     FourierTransform &operator=(const FourierTransform &) = delete;
 
     const PeriodicGrid &grid() const { return grid_; }
+    Planning            planning() const { return planning_; }
     MPI_Comm            communicator() const { return communicator_; }
     // Whether the grid is split over more than one rank.
     bool split() const { return !row_starts.empty(); }
@@ -135,9 +136,8 @@ namespace penny
 
     // The same in place on the transform's own real array, for iterative
     // solvers that fill it, convolve and read it back without the two copies
-    // of apply(). Its rows are row_stride() values apart: ny on one rank, the
-    // 2 (ny/2 + 1) of FFTW's in-place MPI layout on a split grid;
-    // for_each_point walks them.
+    // of apply(). Its rows are row_stride() = 2 (ny/2 + 1) values apart (FFTW's
+    // in-place layout); for_each_point walks them.
     double     *work_array() const { return real_buffer; }
     std::size_t row_stride() const { return row_stride_; }
     // f(i, w) for each local point: i its index in a GridField, w in the work array.
@@ -168,14 +168,11 @@ namespace penny
     // all ranks to a sum over ranks.
     bool holds_first_row() const { return first_row_ == 0 && n_rows_ > 0; }
 
-    // Convolutions (one r2c and one c2r transform each) done so far, by apply
-    // and convolve_work_array: the cost measure of iterative solvers.
-    std::size_t convolutions() const { return n_convolutions; }
-
   private:
     void sum_in_place(double *values, int n) const;
 
     PeriodicGrid grid_;
+    Planning     planning_;
     MPI_Comm     communicator_;
     int          rank_;
     unsigned int first_row_, n_rows_;
@@ -188,7 +185,6 @@ namespace penny
     std::complex<double>     *complex_buffer;
     void                     *forward_plan;
     void                     *inverse_plan;
-    mutable std::size_t       n_convolutions = 0;
   };
 
   // The Fourier factor of d^(ox + oy)/dx^ox dy^oy, (i qx)^ox (i qy)^oy, zero
