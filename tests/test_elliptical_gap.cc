@@ -243,6 +243,19 @@ BOOST_AUTO_TEST_CASE(summit_searches_on_the_closed_form)
       BOOST_TEST(adhesive_gap(s, rho, ends(s)).tension > adhesive.tension);
     }
   BOOST_TEST(adhesive.tension > 1.2020809449045589);
+
+  // Nearly round summits: an answer for every Ay/Ax < 1, a gap rounder than
+  // the summit, continuous into the circle: P - psi falls from 7.5e-6 at
+  // Ay/Ax = 0.99 to the search's resolution (about 1e-6 of P) by 0.999.
+  for (const double nearly_round : {0.99, 0.999, 0.9999, 0.99999})
+    {
+      const double s =
+          adhesive_summit_shape(galin, nearly_round, adhesionless_summit_shape(galin, nearly_round));
+      const double P = adhesive_gap(s, nearly_round, ends(s)).tension;
+      BOOST_TEST(1 - s < 1 - nearly_round);
+      BOOST_TEST(P - 1.2020809449045589 > 0);
+      BOOST_TEST(P - 1.2020809449045589 < (nearly_round < 0.999 ? 1e-5 : 1e-6));
+    }
 }
 
 // The summit searches on FE models at test size (cells 4 along and 8 around

@@ -198,8 +198,8 @@ namespace penny
     // Only a start: its accuracy beyond the interpolation's is wasted.
     const ContactSolution start =
         coarse->solve(mean_pressure, {control.max_iterations, std::max(control.tolerance, 1e-4)});
-    ContactSolution solution = minimise(Control::mean_pressure, mean_pressure, control,
-                                        interpolated(*coarse_transform, start.gap, transform_));
+    ContactSolution solution   = minimise(Control::mean_pressure, mean_pressure, control,
+                                          interpolated(*coarse_transform, start.gap, transform_));
     solution.coarse_iterations = (start.iterations + start.coarse_iterations) *
                                  coarse_transform->grid().n_points() / transform_.grid().n_points();
     return solution;
@@ -250,14 +250,14 @@ namespace penny
     double *const work       = transform_.work_array();
     const auto    each_point = [&](auto &&f) { transform_.for_each_point(f); };
 
-    GridField gradient(n), previous_gradient(n, 0.), step(n), direction(n, 0.);
-    GridField slope(adhesive ? n : 0); // phi'(g)
+    GridField  gradient(n), previous_gradient(n, 0.), step(n), direction(n, 0.);
+    GridField  slope(adhesive ? n : 0); // phi'(g)
     const auto attraction = [&](const std::size_t i) { return adhesive ? slope[i] : 0; };
-    GridField                  mean_response; // P_F C P_F 1, at a prescribed mean gap
+    GridField  mean_response; // P_F C P_F 1, at a prescribed mean gap
     // bool, not char: a store through a char may alias anything, and the
     // compiler would reload every array's address after each one.
     const std::unique_ptr<bool[]> free(new bool[n]);
-    double                     mu = value;
+    double                        mu = value;
 
     // At a prescribed mean gap: shift step by a multiple of P_F C P_F 1 so
     // that it keeps the mean of g, and mu and the gradient with it.

@@ -51,8 +51,8 @@ namespace penny
 
   FourierTransform::FourierTransform(const PeriodicGrid &grid, const Planning planning,
                                      const MPI_Comm communicator)
-      : grid_(grid), planning_(planning), communicator_(communicator), rank_(0), first_row_(0), n_rows_(grid.nx),
-        n_coefficients_(std::size_t(grid.nx) * (grid.ny / 2 + 1))
+      : grid_(grid), planning_(planning), communicator_(communicator), rank_(0), first_row_(0),
+        n_rows_(grid.nx), n_coefficients_(std::size_t(grid.nx) * (grid.ny / 2 + 1))
   {
     if (grid.nx == 0 || grid.ny == 0 || !(grid.lx > 0) || !(grid.ly > 0))
       throw std::invalid_argument("FourierTransform: the grid needs nx, ny >= 1 points and lx, ly > 0");
@@ -184,8 +184,10 @@ namespace penny
   double FourierTransform::quadratic_form_of_work_array(const Spectrum &multiplier) const
   {
     fftw_execute(static_cast<fftw_plan>(forward_plan));
-    const auto term = [&](const std::size_t c) { return multiplier[c].real() * std::norm(complex_buffer[c]); };
-    double     sum  = 0;
+    const auto term = [&](const std::size_t c) {
+      return multiplier[c].real() * std::norm(complex_buffer[c]);
+    };
+    double sum = 0;
     for (std::size_t c = 0; c < multiplier.size(); ++c)
       sum += term(c);
     // Each coefficient stands for itself and its conjugate at -q, except on

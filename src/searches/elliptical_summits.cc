@@ -113,15 +113,22 @@ namespace penny
   {
     if (rho == 1)
       return 1;
-    const auto tension = [&](const double s) { return adhesive_gap(s, rho, front_ends(sifs, s)).tension; };
+    // s = s_0 + t (1 - s_0), t in (0, 1): Brent's tolerance is relative to
+    // t, so the search resolves the interval however narrow it gets as
+    // Ay/Ax -> 1 (in s it stopped at its start, the circle, once the
+    // interval was narrower than the tolerance: Ay/Ax = 0.999).
+    const double s_0     = adhesionless_aspect_ratio;
+    const auto   shape   = [&](const double t) { return s_0 + t * (1 - s_0); };
+    const auto   tension = [&](const double t) {
+      return adhesive_gap(shape(t), rho, front_ends(sifs, shape(t))).tension;
+    };
     std::uintmax_t iterations = 100;
-    const auto [s, P]         = boost::math::tools::brent_find_minima(tension, adhesionless_aspect_ratio, 1.,
-                                                                      minimum_bits, iterations);
+    const auto [t, P] = boost::math::tools::brent_find_minima(tension, 0., 1., minimum_bits, iterations);
     if (iterations >= 100)
       throw std::runtime_error("elliptical summit: Brent's method did not converge in 100 steps");
     if (!std::isfinite(P))
       throw std::runtime_error("elliptical summit: no adhesive equilibrium for Ay/Ax = " +
                                std::to_string(rho));
-    return s;
+    return shape(t);
   }
 } // namespace penny
