@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 """The verification report: runs the verifying scenes and writes the evidence.
 
-    /usr/bin/python3 postprocess/verification_report.py BUILD OUT [-np N] [--prms DIR] [--rerun] [NAME ...]
+    /usr/bin/python3 postprocess/verification_report.py BUILD OUT [-np N] [--prms DIR] [--rerun]
+                     [--readme FILE] [NAME ...]
 
 Runs every parameter file of DIR (default prms/, the shipped full size) whose
 scene has a verdict (a Verification subsection), or the files NAME.prm named,
@@ -17,6 +18,11 @@ Resumable: a run whose record (OUT/runs/NAME/record.json) was made with the
 same commit, parameter file and ranks is not run again unless --rerun. A
 progress line before each run gives the time spent and an estimate of the
 time left (from earlier records of the same run where there are any).
+
+With --readme FILE, the table of the paper's claims also replaces the block
+between the lines README_BEGIN and README_END of FILE (README.md carries
+one), with the report's commit, date and size and the verifying parameter
+files it did not run.
 
 Exit status: 0 if every run passed and its figures were drawn, 1 if any
 failed, stopped with an error or lost a figure, 2 for bad arguments."""
@@ -95,6 +101,7 @@ def read_arguments():
     parser.add_argument("-np", dest="ranks", type=int, default=1, help="MPI ranks of each run (default 1)")
     parser.add_argument("--prms", type=pathlib.Path, default=REPOSITORY / "prms", help="where the parameter files are")
     parser.add_argument("--rerun", action="store_true", help="run again what already has a record")
+    parser.add_argument("--readme", type=pathlib.Path, help="a file whose report block gets the claims table")
     arguments = parser.parse_intermixed_args()
     arguments.penny = (arguments.build / "penny").resolve()
     if not os.access(arguments.penny, os.X_OK):
@@ -105,7 +112,19 @@ def read_arguments():
         parser.error(f"--prms {arguments.prms} is not a folder")
     if arguments.out.exists() and not arguments.out.is_dir():
         parser.error(f"the report folder {arguments.out} exists and is not a folder")
+    if arguments.readme and not (arguments.readme.is_file() and readme_block(arguments.readme.read_text())):
+        parser.error(f"--readme {arguments.readme} is not a file with the lines {README_BEGIN!r} and {README_END!r}")
     return arguments
+
+
+README_BEGIN = "<!-- verification report: begin -->"
+README_END = "<!-- verification report: end -->"
+
+
+def readme_block(text):
+    """The span of the text between README_BEGIN and README_END, or None."""
+    begin, end = text.find(README_BEGIN + "\n"), text.find(README_END)
+    return (begin + len(README_BEGIN) + 1, end) if 0 <= begin < end else None
 
 
 def scene_of(prm):
@@ -127,13 +146,23 @@ def selected_files(arguments):
         if missing:
             refuse(f"no parameter file {', '.join(missing)}")
         return files
+    return verifying_files(arguments)
+
+
+def verifying_files(arguments):
     return [f for f in sorted(arguments.prms.glob("*.prm")) if has_verdict(arguments.penny, scene_of(f))]
 
 
-def commit():
-    """The commit, with a hash of the uncommitted changes where there are any."""
+def commit(build):
+    """The commit of the sources the build was made from (its CMakeCache.txt names them), with a hash of
+    their uncommitted changes where there are any."""
+    cache = build / "CMakeCache.txt"
+    found = re.search(r"^CMAKE_HOME_DIRECTORY:INTERNAL=(.*)$", cache.read_text(), re.MULTILINE) if cache.is_file() else None
+    if not found:
+        return "unknown (no CMakeCache.txt in the build folder)"
+
     def git(*words):
-        return subprocess.run(["git", "-C", str(REPOSITORY), *words], capture_output=True, text=True).stdout
+        return subprocess.run(["git", "-C", found.group(1), *words], capture_output=True, text=True).stdout
     head = git("rev-parse", "--short=10", "HEAD").strip() or "unknown"
     changes = git("diff", "HEAD")
     return head + ("+" + hashlib.sha256(changes.encode()).hexdigest()[:8] if changes else "")
@@ -256,7 +285,24 @@ def write_report(arguments, records, header):
             "<h2>Every run</h2>", html_table(run_columns, rows)]
     page += ["<h2>Figures</h2>"] + [f"<p>{html.escape(n)}<br><img src='{html.escape(f)}'></p>" for n, f in pictures]
     write_whole(arguments.out / "report.html", "\n".join(page) + "</body></html>\n")
+    if arguments.readme:
+        write_readme_block(arguments, header, summary, markdown_table(claim_columns, claims),
+                           {name for name, _, _ in records})
     return passed == len(rows)
+
+
+def write_readme_block(arguments, header, summary, claims_table, names):
+    prms = arguments.prms.resolve()
+    where = prms.relative_to(REPOSITORY) if prms.is_relative_to(REPOSITORY) else prms
+    block = [f"From the verification report of commit {header['commit']} (started {header['started']}; "
+             f"{header['machine']}; parameter files in {where}/, {arguments.ranks} rank(s) each): {summary}", "",
+             claims_table, ""]
+    others = sorted(f.stem for f in verifying_files(arguments) if f.stem not in names)
+    if others:
+        block += [f"Verifying parameter files that report did not run: {', '.join(others)}.", ""]
+    text = arguments.readme.read_text()
+    start, stop = readme_block(text)
+    write_whole(arguments.readme, text[:start] + "\n".join(block) + text[stop:])
 
 
 def main():
@@ -271,7 +317,7 @@ def main():
         fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
     except BlockingIOError:
         refuse(f"another report is running in {arguments.out}")
-    revision = commit()
+    revision = commit(arguments.build)
     header = {"commit": revision, "machine": machine(), "load average at start": load_average(),
               "parameter files": str(arguments.prms), "ranks per run": arguments.ranks,
               "started": time.strftime("%Y-%m-%d %H:%M:%S")}
