@@ -19,19 +19,26 @@ namespace penny
   namespace
   {
     // deal.II writes names in XML (and may in JSON) with every character
-    // other than a letter or digit as _XX, its code in hex.
+    // other than a letter or digit as _XX, its code in hex. Anything else
+    // (_00, _41: a control character, a letter) is not such a code and
+    // stays as written, so an error message shows it.
     std::string demangled(const std::string &name)
     {
       std::string plain;
       for (std::size_t i = 0; i < name.size(); ++i)
-        if (name[i] == '_' && i + 2 < name.size() && std::isxdigit(static_cast<unsigned char>(name[i + 1])) &&
-            std::isxdigit(static_cast<unsigned char>(name[i + 2])))
-          {
-            plain += static_cast<char>(std::stoi(name.substr(i + 1, 2), nullptr, 16));
-            i += 2;
-          }
-        else
-          plain += name[i];
+        {
+          const bool code = name[i] == '_' && i + 2 < name.size() &&
+                            std::isxdigit(static_cast<unsigned char>(name[i + 1])) &&
+                            std::isxdigit(static_cast<unsigned char>(name[i + 2]));
+          const int c = code ? std::stoi(name.substr(i + 1, 2), nullptr, 16) : 0;
+          if (code && std::isprint(c) && !std::isalnum(c))
+            {
+              plain += static_cast<char>(c);
+              i += 2;
+            }
+          else
+            plain += name[i];
+        }
       return plain;
     }
 
