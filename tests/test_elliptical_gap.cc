@@ -29,6 +29,7 @@ using namespace dealii;
 namespace
 {
   const EllipticalFront front(2, 1);
+  const auto            nearest = std::make_shared<const NearestFrontPoint>(front);
 
   // int_lo^hi g(phi) dphi by the composite Simpson rule on n (even) panels.
   template <typename Function> double simpson(const Function &g, const double lo, const double hi)
@@ -73,7 +74,7 @@ namespace
 BOOST_AUTO_TEST_CASE(front_weight_without_first_and_second_moments)
 {
   const double                centre = 0.7, h = 0.3;
-  const FrontSegmentExtension q(front, centre, h, 0.1);
+  const FrontSegmentExtension q(nearest, centre, h, 0.1);
   for (const unsigned int power : {0, 1, 2})
     {
       const double moment =
@@ -94,8 +95,8 @@ BOOST_AUTO_TEST_CASE(front_weight_without_first_and_second_moments)
 BOOST_AUTO_TEST_CASE(front_weight_folded_at_the_symmetry_planes)
 {
   const double                h = 0.3;
-  const FrontSegmentExtension inside(front, 0.7, h, 0.1), at_x_axis(front, 0, h, 0.1),
-      at_y_axis(front, M_PI / 2, h, 0.1);
+  const FrontSegmentExtension inside(nearest, 0.7, h, 0.1), at_x_axis(nearest, 0, h, 0.1),
+      at_y_axis(nearest, M_PI / 2, h, 0.1);
   for (const double s : {0., 0.1, 0.25, 0.29})
     {
       BOOST_TEST(at_x_axis.front_weight(s) == 2 * inside.front_weight(0.7 + s), tt::tolerance(1e-12));
@@ -108,7 +109,7 @@ BOOST_AUTO_TEST_CASE(front_weight_folded_at_the_symmetry_planes)
 BOOST_AUTO_TEST_CASE(gradient_of_the_extension_by_finite_differences)
 {
   const double                rho = 0.2; // b^2/a = 0.5
-  const FrontSegmentExtension q(front, 0.6, 0.4, rho);
+  const FrontSegmentExtension q(nearest, 0.6, 0.4, rho);
   const double                step = 1e-6;
   for (const auto &[phi, d, theta] : {std::tuple{0.6, 0.05, 0.3}, std::tuple{0.45, 0.12, 2.5},
                                       std::tuple{0.8, 0.15, 1.4}, std::tuple{0.3, 0.02, -2.}})
@@ -134,7 +135,7 @@ BOOST_AUTO_TEST_CASE(gradient_of_the_extension_by_finite_differences)
 BOOST_AUTO_TEST_CASE(ring_edge_crossings)
 {
   const double                rho = 0.2;
-  const FrontSegmentExtension q(front, 0.6, 0.4, rho);
+  const FrontSegmentExtension q(nearest, 0.6, 0.4, rho);
   const auto                  box = [&](const double d, const double half_side) {
     const Point<3>     centre = front.point(0.6) + d * front.unit_normal(0.6) + Point<3>(0, 0, 1e-3);
     const Tensor<1, 3> corner({half_side, half_side, half_side});

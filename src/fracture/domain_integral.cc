@@ -103,6 +103,8 @@ namespace penny
     std::vector<Tensor3>                     d(n_fields);
     std::vector<Strain>                      sigma(n_fields);
     std::vector<double>                      t(n_fields);
+    std::vector<Tensor3>                     flux(pairs.size());
+    std::vector<double>                      energy(pairs.size());
     std::vector<unsigned int>                touching;
 
     // The extensions that may touch `cell`, and whether the edge of one crosses `box`.
@@ -146,6 +148,13 @@ namespace penny
                 d[f]     = Kinematics::gradient(grads[f][k], values_at[f][k], x);
                 sigma[f] = elasticity.stress(strain(d[f]));
               }
+            // sigma_ij v_i,k q_k,j = (grad v^T sigma) : grad q, polarised, per pair.
+            for (unsigned int p = 0; p < pairs.size(); ++p)
+              {
+                const auto [a, b] = pairs[p];
+                energy[p]         = 0.5 * (sigma[a] * strain(d[b]));
+                flux[p] = 0.5 * (transpose(d[b]) * Tensor3(sigma[a]) + transpose(d[a]) * Tensor3(sigma[b]));
+              }
             const double dmu = Kinematics::measure(x) * values.JxW(k);
             for (const unsigned int i : touching)
               {
@@ -153,13 +162,7 @@ namespace penny
                 if (grad_q.norm_square() == 0)
                   continue;
                 for (unsigned int p = 0; p < pairs.size(); ++p)
-                  {
-                    const auto [a, b] = pairs[p];
-                    const double W    = 0.5 * (sigma[a] * strain(d[b]));
-                    const double flux = 0.5 * (scalar_product(Tensor3(sigma[a]), d[b] * grad_q) +
-                                               scalar_product(Tensor3(sigma[b]), d[a] * grad_q));
-                    area_term[p][i] += (flux - W * trace(grad_q)) * dmu;
-                  }
+                  area_term[p][i] += (scalar_product(flux[p], grad_q) - energy[p] * trace(grad_q)) * dmu;
               }
           }
       }

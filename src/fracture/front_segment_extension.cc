@@ -23,9 +23,28 @@ namespace penny
     }
   } // namespace
 
-  FrontSegmentExtension::FrontSegmentExtension(const EllipticalFront &front, const double centre,
-                                               const double half_width, const double ring_radius)
-      : front(front), centre(centre), half_width(half_width), rho(ring_radius)
+  const FrontFrame &NearestFrontPoint::operator()(const Point<3> &x) const
+  {
+    if (!(x == last_point))
+      {
+        last_point         = x;
+        const auto   local = front.local_coordinates(x);
+        const double phi   = local.phi;
+        last_frame         = {local,
+                              front.point(phi),
+                              front.unit_normal(phi),
+                              front.unit_tangent(phi),
+                              front.arc_length_rate(phi),
+                              front.curvature(phi)};
+      }
+    return last_frame;
+  }
+
+  FrontSegmentExtension::FrontSegmentExtension(std::shared_ptr<const NearestFrontPoint> nearest,
+                                               const double centre, const double half_width,
+                                               const double ring_radius)
+      : nearest(std::move(nearest)), front(this->nearest->front), centre(centre), half_width(half_width),
+        rho(ring_radius)
   {
     if (!(centre >= 0 && centre <= M_PI / 2))
       throw std::invalid_argument("FrontSegmentExtension: the centre must lie in [0, pi/2]");
@@ -60,24 +79,14 @@ namespace penny
     return weight_and_slope(phi).first;
   }
 
-  const EllipticalFront::Coordinates &FrontSegmentExtension::coordinates(const Point<3> &x) const
-  {
-    if (!(x == last_point))
-      {
-        last_point       = x;
-        last_coordinates = front.local_coordinates(x);
-      }
-    return last_coordinates;
-  }
-
   Tensor<1, 3> FrontSegmentExtension::value(const Point<3> &x) const
   {
-    const auto  &local = coordinates(x);
-    const double s     = 1 - (local.distance / rho) * (local.distance / rho);
+    const FrontFrame &frame = (*nearest)(x);
+    const double      s     = 1 - (frame.local.distance / rho) * (frame.local.distance / rho);
     if (s <= 0)
       return {};
-    const double f = weight_and_slope(local.phi).first;
-    return f * s * s * s * s * front.unit_normal(local.phi);
+    const double f = weight_and_slope(frame.local.phi).first;
+    return f * s * s * s * s * frame.normal;
   }
 
   // grad q = n (x) (f' w grad phi + f w' grad d) + f w dn/dphi (x) grad phi, with
@@ -85,21 +94,21 @@ namespace penny
   // positive outside the ellipse), grad d = (x - x_front)/d, dn/dphi = kappa |dx/dphi| t.
   Tensor<2, 3> FrontSegmentExtension::gradient(const Point<3> &x) const
   {
-    const auto  &local = coordinates(x);
-    const double s     = 1 - (local.distance / rho) * (local.distance / rho);
+    const FrontFrame &frame = (*nearest)(x);
+    const auto       &local = frame.local;
+    const double      s     = 1 - (local.distance / rho) * (local.distance / rho);
     if (s <= 0)
       return {};
     const auto [f, df] = weight_and_slope(local.phi);
     if (f == 0 && df == 0)
       return {};
-    const double       phi = local.phi, speed = front.arc_length_rate(phi), kappa = front.curvature(phi);
     const double       w = s * s * s * s;
-    const Tensor<1, 3> n = front.unit_normal(phi), tangent = front.unit_tangent(phi);
-    const Tensor<1, 3> grad_phi = tangent / (speed * (1 + kappa * local.distance * std::cos(local.theta)));
+    const Tensor<1, 3> grad_phi =
+        frame.tangent / (frame.speed * (1 + frame.curvature * local.distance * std::cos(local.theta)));
     // w' grad d = -8 s^3 d/rho^2 (x - x_front)/d, without the division.
-    const Tensor<1, 3> w_grad_d = -8 * s * s * s / (rho * rho) * (x - front.point(phi));
-    return outer_product(n, df * w * grad_phi + f * w_grad_d) +
-           f * w * kappa * speed * outer_product(tangent, grad_phi);
+    const Tensor<1, 3> w_grad_d = -8 * s * s * s / (rho * rho) * (x - frame.point);
+    return outer_product(frame.normal, df * w * grad_phi + f * w_grad_d) +
+           f * w * frame.curvature * frame.speed * outer_product(frame.tangent, grad_phi);
   }
 
   // A cell may meet the support when its centre lies within rho plus its

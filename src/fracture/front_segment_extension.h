@@ -30,17 +30,51 @@
 #include "fracture/crack_extension.h"
 
 #include <limits>
+#include <memory>
 
 namespace penny
 {
+  // The nearest front point of a point x, its coordinates relative to it, and
+  // the front's frame there.
+  struct FrontFrame
+  {
+    EllipticalFront::Coordinates local;
+    dealii::Point<3>             point;
+    dealii::Tensor<1, 3>         normal;
+    dealii::Tensor<1, 3>         tangent;
+    double                       speed; // |dx/dphi|
+    double                       curvature;
+  };
+
+  // The front frame of the last point asked for. The domain integral asks
+  // every extension that touches a cell for its value and gradient at the
+  // same quadrature point in turn: extensions that share one of these find the
+  // nearest front point (an iteration) and its frame once per point, not once
+  // per extension.
+  class NearestFrontPoint
+  {
+  public:
+    explicit NearestFrontPoint(const EllipticalFront &front) : front(front) {}
+
+    const FrontFrame &operator()(const dealii::Point<3> &x) const;
+
+    const EllipticalFront front;
+
+  private:
+    mutable dealii::Point<3> last_point{std::numeric_limits<double>::quiet_NaN(), 0, 0};
+    mutable FrontFrame       last_frame{};
+  };
+
   class FrontSegmentExtension : public CrackExtension<3>
   {
   public:
     // The weight centred on the front point at parametric angle `centre`
     // (0 <= centre <= pi/2), half-width `half_width` in phi (at most pi/2: then
     // the images about the two symmetry planes are all the folding needs),
-    // ring radius `ring_radius` (m). Throws std::invalid_argument out of range.
-    FrontSegmentExtension(const EllipticalFront &front, double centre, double half_width, double ring_radius);
+    // ring radius `ring_radius` (m), on the front of `nearest`. Throws
+    // std::invalid_argument out of range.
+    FrontSegmentExtension(std::shared_ptr<const NearestFrontPoint> nearest, double centre, double half_width,
+                          double ring_radius);
 
     dealii::Tensor<1, 3> value(const dealii::Point<3> &x) const override;
     dealii::Tensor<2, 3> gradient(const dealii::Point<3> &x) const override;
@@ -54,18 +88,12 @@ namespace penny
 
   private:
     // f(phi) and df/dphi.
-    std::pair<double, double> weight_and_slope(double phi) const;
-    // The front coordinates of x; the domain integral asks value() and
-    // gradient() at the same point in turn, so the last point's are kept.
-    const EllipticalFront::Coordinates &coordinates(const dealii::Point<3> &x) const;
-
-    const EllipticalFront front;
-    const double          centre;
-    const double          half_width;
-    const double          rho;
-    double                measure;
-
-    mutable dealii::Point<3>             last_point{std::numeric_limits<double>::quiet_NaN(), 0, 0};
-    mutable EllipticalFront::Coordinates last_coordinates{};
+    std::pair<double, double>                      weight_and_slope(double phi) const;
+    const std::shared_ptr<const NearestFrontPoint> nearest;
+    const EllipticalFront                         &front;
+    const double                                   centre;
+    const double                                   half_width;
+    const double                                   rho;
+    double                                         measure;
   };
 } // namespace penny

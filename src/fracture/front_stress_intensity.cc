@@ -24,11 +24,12 @@ namespace penny
     const double front_cells      = model.front_vertex_angles().size() - 1;
     const double curvature_radius = 1 / front.curvature(0);
     half_width_angle              = half_width_cells * M_PI / (2 * front_cells);
+    const auto nearest            = std::make_shared<const NearestFrontPoint>(front);
     for (const double rho : ring_radii)
       {
         extensions.emplace_back();
         for (const double phi : angles)
-          extensions.back().emplace_back(front, phi, half_width_angle, rho * curvature_radius);
+          extensions.back().emplace_back(nearest, phi, half_width_angle, rho * curvature_radius);
       }
   }
 
