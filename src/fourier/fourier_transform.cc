@@ -68,8 +68,7 @@ namespace penny
     if (ranks == 1)
       {
         real_buffer    = fftw_alloc_real(2 * n_coefficients_);
-        complex_buffer = reinterpret_cast<std::complex<double> *>(real_buffer);
-        auto *spectrum = reinterpret_cast<fftw_complex *>(complex_buffer);
+        auto *spectrum = reinterpret_cast<fftw_complex *>(real_buffer);
         forward_plan   = fftw_plan_dft_r2c_2d(grid.nx, grid.ny, real_buffer, spectrum, flags);
         inverse_plan   = fftw_plan_dft_c2r_2d(grid.nx, grid.ny, spectrum, real_buffer, flags);
         return;
@@ -90,8 +89,7 @@ namespace penny
     row_starts      = block_starts(communicator, n_rows_);
     line_starts     = block_starts(communicator, lines);
     real_buffer     = fftw_alloc_real(2 * std::max<ptrdiff_t>(complex_size, 1));
-    complex_buffer  = reinterpret_cast<std::complex<double> *>(real_buffer);
-    auto *spectrum  = reinterpret_cast<fftw_complex *>(complex_buffer);
+    auto *spectrum  = reinterpret_cast<fftw_complex *>(real_buffer);
     forward_plan    = fftw_mpi_plan_dft_r2c_2d(grid.nx, grid.ny, real_buffer, spectrum, communicator,
                                                flags | FFTW_MPI_TRANSPOSED_OUT);
     inverse_plan    = fftw_mpi_plan_dft_c2r_2d(grid.nx, grid.ny, spectrum, real_buffer, communicator,
@@ -140,7 +138,7 @@ namespace penny
     for_each_point([&](const std::size_t i, const std::size_t w) { real_buffer[w] = field[i]; });
     fftw_execute(static_cast<fftw_plan>(forward_plan));
     const double scale = 1. / grid_.n_points();
-    Spectrum     coefficients(complex_buffer, complex_buffer + n_coefficients_);
+    Spectrum     coefficients(spectrum_buffer(), spectrum_buffer() + n_coefficients_);
     for (auto &c : coefficients)
       c *= scale;
     return coefficients;
@@ -148,7 +146,7 @@ namespace penny
 
   GridField FourierTransform::inverse(const Spectrum &coefficients) const
   {
-    std::copy(coefficients.begin(), coefficients.end(), complex_buffer);
+    std::copy(coefficients.begin(), coefficients.end(), spectrum_buffer());
     fftw_execute(static_cast<fftw_plan>(inverse_plan));
     GridField field(n_local_points());
     for_each_point([&](const std::size_t i, const std::size_t w) { field[i] = real_buffer[w]; });
@@ -175,19 +173,19 @@ namespace penny
   void FourierTransform::convolve_work_array(const Spectrum &multiplier) const
   {
     fftw_execute(static_cast<fftw_plan>(forward_plan));
-    const double scale = 1. / grid_.n_points();
+    const double          scale    = 1. / grid_.n_points();
+    std::complex<double> *spectrum = spectrum_buffer();
     for (std::size_t c = 0; c < multiplier.size(); ++c)
-      complex_buffer[c] *= scale * multiplier[c];
+      spectrum[c] *= scale * multiplier[c];
     fftw_execute(static_cast<fftw_plan>(inverse_plan));
   }
 
   double FourierTransform::quadratic_form_of_work_array(const Spectrum &multiplier) const
   {
     fftw_execute(static_cast<fftw_plan>(forward_plan));
-    const auto term = [&](const std::size_t c) {
-      return multiplier[c].real() * std::norm(complex_buffer[c]);
-    };
-    double sum = 0;
+    const std::complex<double> *spectrum = spectrum_buffer();
+    const auto term = [&](const std::size_t c) { return multiplier[c].real() * std::norm(spectrum[c]); };
+    double     sum  = 0;
     for (std::size_t c = 0; c < multiplier.size(); ++c)
       sum += term(c);
     // Each coefficient stands for itself and its conjugate at -q, except on

@@ -181,10 +181,14 @@ namespace penny
     std::vector<unsigned int> row_starts, line_starts;
     unsigned int              first_line_ = 0;
     std::size_t               n_coefficients_, row_stride_;
-    double                   *real_buffer;
-    std::complex<double>     *complex_buffer;
-    void                     *forward_plan;
-    void                     *inverse_plan;
+    // The one FFTW array: the field in place of its spectrum.
+    double               *real_buffer;
+    std::complex<double> *spectrum_buffer() const
+    {
+      return reinterpret_cast<std::complex<double> *>(real_buffer);
+    }
+    void *forward_plan;
+    void *inverse_plan;
   };
 
   // The Fourier factor of d^(ox + oy)/dx^ox dy^oy, (i qx)^ox (i qy)^oy, zero

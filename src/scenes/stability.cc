@@ -5,10 +5,8 @@
 // reason it is expected to miss it. A case that misses without such a reason
 // fails the scene.
 #include "numerics/relative_error.h"
-#include "output/progress.h"
-#include "output/table.h"
-#include "parallel/spread_over_ranks.h"
 #include "problems/penny_gap.h"
+#include "problems/stability_cases.h"
 #include "scenes/scene.h"
 
 #include <deal.II/base/timer.h>
@@ -43,34 +41,6 @@ namespace penny
       return solve_penny_gap(setting.model, setting.load, ring_radii, timer);
     }
 
-    // What a case's solves give: its error, the largest relative residual,
-    // CG's condition estimate and one more number a case may need for its status.
-    struct Outcome
-    {
-      double error, residual, condition, extra = 0;
-    };
-
-    struct Case
-    {
-      std::string              name, setting, measure;
-      double                   tolerance;
-      std::function<Outcome()> run;
-      // Why the case may miss the tolerance (from its outcome); empty: it must pass.
-      std::function<std::string(const Outcome &)> expected_miss = [](const Outcome &) {
-        return std::string();
-      };
-      // A flag that replaces a pass (from its outcome); empty: none.
-      std::function<std::string(const Outcome &)> pass_flag = [](const Outcome &) { return std::string(); };
-
-      std::string status(const Outcome &outcome) const
-      {
-        const std::string reason = outcome.error <= tolerance ? pass_flag(outcome) : expected_miss(outcome);
-        if (!reason.empty())
-          return "flagged: " + reason;
-        return outcome.error <= tolerance ? "pass" : "FAIL: error above tolerance";
-      }
-    };
-
     // Largest relative deviation of the signed K_I on any ring from `reference`.
     double largest_error(const PennyGapMeasurement &results, const double reference)
     {
@@ -79,24 +49,6 @@ namespace penny
         worst = std::max(worst, relative_error(ring.signed_stress_intensity_factor, reference));
       return worst;
     }
-
-    std::string setting(const char *format, const double value)
-    {
-      std::ostringstream text;
-      text << format << value;
-      return text.str();
-    }
-    struct StabilityRow
-    {
-      std::string case_name;
-      std::string setting;
-      double      error;     // see measure
-      std::string measure;   // what `error` is
-      double      tolerance; // the check the error is held to
-      double      residual;  // largest relative residual of the solves
-      double      condition; // CG's estimate, 0 where not available
-      std::string status;    // "pass", "flagged: <reason>" or "FAIL: <reason>"
-    };
 
     struct StabilityScene : Scene
     {
@@ -119,9 +71,9 @@ namespace penny
         const std::vector<double> &radii   = gap.ring_radii;
         const auto                 outcome = [](const PennyGapMeasurement &solved, const double error,
                                 const double extra = 0) {
-          return Outcome{error, solved.relative_residual, solved.condition_estimate, extra};
+          return StabilityOutcome{error, solved.relative_residual, solved.condition_estimate, extra};
         };
-        std::vector<Case> cases;
+        std::vector<StabilityCase> cases;
         // Relative error of the signed K_I against the closed form.
         const auto relative = [&](const std::string &name, const std::string &setting,
                                   const std::function<void(Setting &)> &modify,
@@ -131,14 +83,14 @@ namespace penny
                              return outcome(
                                  solved, largest_error(solved, solved.exact_stress_intensity_factor.value));
                            }});
-          cases.back().expected_miss = [miss](const Outcome &) { return miss; };
+          cases.back().expected_miss = [miss](const StabilityOutcome &) { return miss; };
         };
 
         // 1. Near-incompressibility: degree 1 locks; degree 4 stays accurate.
         for (const double nu : {0.3, 0.45, 0.49, 0.499, 0.4999})
           for (const unsigned int degree : {1u, 4u})
             relative(
-                "incompressibility", setting("degree ", degree) + setting(", nu = ", nu),
+                "incompressibility", setting_text("degree ", degree) + setting_text(", nu = ", nu),
                 [=](Setting &s) {
                   s.model.material.poissons_ratio = nu;
                   s.model.degree                  = degree;
@@ -153,8 +105,8 @@ namespace penny
         const double unit_ratio = ratio_to_exact(solve(base, radii, [](Setting &) {}));
         for (const double E : {1e-3, 1e12})
           for (const double c : {1e-9, 1e3})
-            cases.push_back({"scales", setting("E = ", E) + setting(" Pa, c = ", c) + " m", "vs unit case",
-                             1e-9, [&, E, c] {
+            cases.push_back({"scales", setting_text("E = ", E) + setting_text(" Pa, c = ", c) + " m",
+                             "vs unit case", 1e-9, [&, E, c] {
                                const PennyGapMeasurement solved = solve(base, radii, [=](Setting &s) {
                                  s.model                         = s.model.scaled_to(c);
                                  s.model.material.youngs_modulus = E;
@@ -165,7 +117,7 @@ namespace penny
         // 3. Geometry: the finite domain, the parabola's width, the root and beyond.
         for (const double c_over_R : {1e-5, 1e-3, 1e-2, 1e-1, 0.5})
           relative(
-              "finite domain", setting("c/R = c/H = ", c_over_R),
+              "finite domain", setting_text("c/R = c/H = ", c_over_R),
               [=](Setting &s) {
                 s.model.geometry.domain_radius = s.model.geometry.gap_radius / c_over_R;
                 s.model.geometry.domain_height = s.model.geometry.gap_radius / c_over_R;
@@ -175,7 +127,7 @@ namespace penny
           {
             // extra: 1 where K_I < 0.
             cases.push_back(
-                {"parabola width", setting("a/c = ", a_over_c), "relative", target, [&, a_over_c] {
+                {"parabola width", setting_text("a/c = ", a_over_c), "relative", target, [&, a_over_c] {
                    const PennyGapMeasurement solved = solve(base, radii, [=](Setting &s) {
                      s.load.type           = LoadParameters::Type::parabolic;
                      s.load.tension_radius = a_over_c * s.model.geometry.gap_radius;
@@ -183,13 +135,13 @@ namespace penny
                    return outcome(solved, largest_error(solved, solved.exact_stress_intensity_factor.value),
                                   solved.rings.back().signed_stress_intensity_factor < 0);
                  }});
-            cases.back().pass_flag = [](const Outcome &o) {
+            cases.back().pass_flag = [](const StabilityOutcome &o) {
               return std::string(o.extra ? "K_I < 0: the faces would interpenetrate" : "");
             };
           }
         // At the root K_I is nearly zero: an absolute error in units of 2 P sqrt(c/pi).
         for (const double offset : {-1e-8, 1e-8})
-          cases.push_back({"near the root", setting("c/a = sqrt(3/2) (1 + ", offset) + ")",
+          cases.push_back({"near the root", setting_text("c/a = sqrt(3/2) (1 + ", offset) + ")",
                            "absolute / (2 P sqrt(c/pi))", target, [&, offset] {
                              const PennyGapMeasurement solved = solve(base, radii, [=](Setting &s) {
                                s.load.type = LoadParameters::Type::parabolic;
@@ -212,7 +164,7 @@ namespace penny
           {
             // extra: the largest difference between the rings.
             cases.push_back(
-                {"mesh", setting("cell aspect ratio ", ratio) + " above z = c", "relative", target,
+                {"mesh", setting_text("cell aspect ratio ", ratio) + " above z = c", "relative", target,
                  [&, ratio] {
                    const PennyGapMeasurement solved =
                        solve(base, radii, [=](Setting &s) { s.model.mesh.cell_aspect_ratio = ratio; });
@@ -224,14 +176,15 @@ namespace penny
                    return outcome(solved, largest_error(solved, solved.exact_stress_intensity_factor.value),
                                   spread);
                  }});
-            cases.back().expected_miss = [](const Outcome &o) {
-              return setting("stretched far cells under-resolve the far field; the rings agree to ", o.extra);
+            cases.back().expected_miss = [](const StabilityOutcome &o) {
+              return setting_text("stretched far cells under-resolve the far field; the rings agree to ",
+                                  o.extra);
             };
           }
 
         // 5. Solvers: CG with AMG against the direct solver on the same system.
         for (const unsigned int levels : {20u, 30u})
-          cases.push_back({"solvers", setting("CG + AMG vs direct, tip levels ", levels),
+          cases.push_back({"solvers", setting_text("CG + AMG vs direct, tip levels ", levels),
                            "vs direct, ring by ring", 1e-8, [&, levels] {
                              const auto on_same_system = [=](Setting &s) {
                                s.model.degree          = 2;
@@ -253,38 +206,7 @@ namespace penny
                              return outcome(solved, difference);
                            }});
 
-        // Each case on one rank, the outcomes gathered in case order on every rank.
-        Progress   progress(log, "cases on rank 0");
-        const auto outcomes = spread_over_ranks(MPI_COMM_WORLD, cases.size(), [&](const unsigned int i) {
-          const Outcome o = cases[i].run();
-          progress.step(cases[i].name + ", " + cases[i].setting + ": " + cases[i].status(o));
-          return std::vector<double>{o.error, o.residual, o.condition, o.extra};
-        });
-        std::vector<StabilityRow> rows;
-        for (unsigned int i = 0; i < cases.size(); ++i)
-          {
-            const Outcome o{outcomes[i][0], outcomes[i][1], outcomes[i][2], outcomes[i][3]};
-            rows.push_back({cases[i].name, cases[i].setting, o.error, cases[i].measure, cases[i].tolerance,
-                            o.residual, o.condition, cases[i].status(o)});
-          }
-
-        const Table::Format digits{3, true};
-        Table               table({"case",
-                                   "setting",
-                                   {"error", digits},
-                                   "measure",
-                                   {"tolerance", digits},
-                                   {"relative residual", digits},
-                                   {"condition estimate", digits},
-                                   "status"});
-        for (const auto &row : rows)
-          table.add_row({row.case_name, row.setting, row.error, row.measure, row.tolerance, row.residual,
-                         row.condition, row.status});
-        publish(table, "stability.csv", results, log);
-
-        const auto failures = std::count_if(rows.begin(), rows.end(), [](const StabilityRow &row) {
-          return row.status.rfind("FAIL", 0) == 0;
-        });
+        const unsigned int failures = run_stability_cases(cases, CaseSharing::one_rank_each, results, log);
         if (failures == 0)
           return {true, "every stability case passes or is flagged with its reason"};
         return {false, std::to_string(failures) + " stability case(s) failed; see stability.csv"};
