@@ -15,8 +15,6 @@
 #include <cmath>
 #include <functional>
 #include <iostream>
-#include <limits>
-#include <sstream>
 
 namespace penny
 {

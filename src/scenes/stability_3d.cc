@@ -13,6 +13,7 @@
 
 #include <algorithm>
 #include <functional>
+#include <iostream>
 #include <sstream>
 
 namespace penny
