@@ -43,6 +43,7 @@ namespace penny
     std::map<unsigned int, std::string> failures_here;
     const auto                          run = [&](const unsigned int i) {
       StabilityOutcome o;
+      std::string      failure;
       try
         {
           o = cases[i].run();
@@ -51,13 +52,14 @@ namespace penny
         {
           throw;
         }
-      catch (const std::runtime_error &failure)
+      catch (const std::runtime_error &error)
         {
           const double nan = std::numeric_limits<double>::quiet_NaN();
           o                = {nan, nan, nan, nan};
-          failures_here[i] = failure.what();
+          failure          = error.what();
+          failures_here[i] = failure;
         }
-      progress.step(cases[i].name + ", " + cases[i].setting + ": " + cases[i].status(o, failures_here[i]));
+      progress.step(cases[i].name + ", " + cases[i].setting + ": " + cases[i].status(o, failure));
       return std::vector<double>{o.error, o.residual, o.condition, o.extra};
     };
     // Gathered in case order on every rank.
@@ -69,9 +71,7 @@ namespace penny
         outcomes.push_back(run(i));
     std::map<unsigned int, std::string> failures;
     for (const auto &part : dealii::Utilities::MPI::all_gather(MPI_COMM_WORLD, failures_here))
-      for (const auto &[i, why] : part)
-        if (!why.empty())
-          failures[i] = why;
+      failures.insert(part.begin(), part.end());
 
     const Table::Format digits{3, true};
     Table               table({"case",
