@@ -43,18 +43,17 @@ namespace penny
   FrontSegmentExtension::FrontSegmentExtension(std::shared_ptr<const NearestFrontPoint> nearest,
                                                const double centre, const double half_width,
                                                const double ring_radius)
-      : nearest(std::move(nearest)), front(this->nearest->front), centre(centre), half_width(half_width),
-        rho(ring_radius)
+      : nearest(std::move(nearest)), centre(centre), half_width(half_width), rho(ring_radius)
   {
     if (!(centre >= 0 && centre <= M_PI / 2))
       throw std::invalid_argument("FrontSegmentExtension: the centre must lie in [0, pi/2]");
     if (!(half_width > 0 && half_width <= M_PI / 2))
       throw std::invalid_argument("FrontSegmentExtension: the half-width must lie in (0, pi/2]");
-    const double b = front.semi_axis_b(), a = front.semi_axis_a();
+    const double b = front().semi_axis_b(), a = front().semi_axis_a();
     if (!(ring_radius > 0 && ring_radius < b * b / a))
       throw std::invalid_argument("FrontSegmentExtension: the ring radius must lie in (0, b^2/a)");
     // The support of f in [0, pi/2], split at the centre where k turns.
-    const auto   integrand = [&](const double phi) { return front_weight(phi) * front.arc_length_rate(phi); };
+    const auto integrand = [&](const double phi) { return front_weight(phi) * front().arc_length_rate(phi); };
     const double lo = std::max(0., centre - half_width), hi = std::min(M_PI / 2, centre + half_width);
     using Rule = boost::math::quadrature::gauss_kronrod<double, 31>;
     measure    = (centre > lo ? Rule::integrate(integrand, lo, centre, 15, 1e-14) : 0.) +
@@ -117,13 +116,13 @@ namespace penny
   {
     const Point<3> x     = cell->center();
     const double   reach = rho + cell->diameter();
-    const auto     local = front.local_coordinates(x);
+    const auto     local = front().local_coordinates(x);
     const double   lo = std::max(0., centre - half_width), hi = std::min(M_PI / 2, centre + half_width);
     if (local.distance > reach)
       return false;
     if (local.phi >= lo && local.phi <= hi)
       return true;
-    return std::min(x.distance(front.point(lo)), x.distance(front.point(hi))) <= reach;
+    return std::min(x.distance(front().point(lo)), x.distance(front().point(hi))) <= reach;
   }
 
   // The distance d from the front is 1-Lipschitz: over a box of half-diagonal
@@ -132,6 +131,6 @@ namespace penny
   {
     const auto  &corners       = box.get_boundary_points();
     const double half_diagonal = corners.first.distance(corners.second) / 2;
-    return std::abs(front.local_coordinates(box.center()).distance - rho) <= half_diagonal;
+    return std::abs(front().local_coordinates(box.center()).distance - rho) <= half_diagonal;
   }
 } // namespace penny

@@ -88,9 +88,10 @@ namespace penny
 
   private:
     // f(phi) and df/dphi.
-    std::pair<double, double>                      weight_and_slope(double phi) const;
+    std::pair<double, double> weight_and_slope(double phi) const;
+    const EllipticalFront    &front() const { return nearest->front; }
+
     const std::shared_ptr<const NearestFrontPoint> nearest;
-    const EllipticalFront                         &front;
     const double                                   centre;
     const double                                   half_width;
     const double                                   rho;

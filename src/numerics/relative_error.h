@@ -1,7 +1,10 @@
 // How far a computed value lies from its reference.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
+#include <vector>
 
 namespace penny
 {
@@ -9,5 +12,17 @@ namespace penny
   inline double relative_error(const double value, const double reference)
   {
     return reference == 0 ? std::abs(value) : std::abs(value / reference - 1);
+  }
+
+  // The largest relative_error(values[i], references[i]); 0 for empty lists.
+  inline double largest_relative_error(const std::vector<double> &values,
+                                       const std::vector<double> &references)
+  {
+    if (values.size() != references.size())
+      throw std::invalid_argument("largest_relative_error: the lists differ in length");
+    double worst = 0;
+    for (std::size_t i = 0; i < values.size(); ++i)
+      worst = std::max(worst, relative_error(values[i], references[i]));
+    return worst;
   }
 } // namespace penny

@@ -162,8 +162,7 @@ namespace penny
     for (const double phi : solved.angles)
       solved.exact_sifs.push_back(exact.stress_intensity_factor(phi));
     for (const auto &ring : solved.signed_sifs)
-      for (unsigned int i = 0; i < ring.size(); ++i)
-        solved.largest_error = std::max(solved.largest_error, relative_error(ring[i], solved.exact_sifs[i]));
+      solved.largest_error = std::max(solved.largest_error, largest_relative_error(ring, solved.exact_sifs));
     if (gap.aspect_ratio == 1)
       {
         TimerOutput::Scope scope(timer, "axisymmetric model");

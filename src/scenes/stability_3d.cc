@@ -53,15 +53,6 @@ namespace penny
       return ratios;
     }
 
-    // The largest relative difference of two lists of the same length.
-    double largest_difference(const std::vector<double> &x, const std::vector<double> &reference)
-    {
-      double worst = 0;
-      for (unsigned int i = 0; i < x.size(); ++i)
-        worst = std::max(worst, relative_error(x[i], reference[i]));
-      return worst;
-    }
-
     struct Stability3dScene : Scene
     {
       void inputs(Sections &sections) override
@@ -136,7 +127,7 @@ namespace penny
                                  s.model.model.material.youngs_modulus = E;
                                  s.gap.semi_axis_a                     = a;
                                });
-                               return outcome(solved, largest_difference(ratios_to_exact(solved), unit));
+                               return outcome(solved, largest_relative_error(ratios_to_exact(solved), unit));
                              }});
 
         // 5. CG with AMG against the direct solver on the same system.
@@ -150,7 +141,7 @@ namespace penny
                };
                const auto direct = solve(base, with(LinearSolverParameters::Type::direct));
                const auto cg     = solve(base, with(LinearSolverParameters::Type::cg_amg));
-               return outcome(cg, largest_difference(ratios_to_exact(cg), ratios_to_exact(direct)));
+               return outcome(cg, largest_relative_error(ratios_to_exact(cg), ratios_to_exact(direct)));
              }});
 
         const unsigned int failures = run_stability_cases(cases, CaseSharing::all_ranks, results, log);
