@@ -1,0 +1,50 @@
+#!/usr/bin/env bash
+# Convergence of the 3D elliptical gap under uniform pressure, in p and in h,
+# for b/a = 1, 0.5, 0.25 and 0.1: prms/elliptical-gap.prm (default mesh, 17
+# front points, rings 0.1, 0.2, 0.4 b^2/a) at degrees 1, 2, 3 and at degrees
+# 1, 2 with one global refinement, on 2 MPI ranks without fields; then the
+# table of the largest K_I error against DoFs, wall time and peak memory
+# (postprocess/report_elliptical_convergence.py). CG with AMG to 1e-10;
+# b/a = 0.1 on the direct solver (AMG stalls below about b/a = 0.14), whose
+# memory stops it at degree 2 without refinement. About 40 minutes on the
+# 2-core machine; run it on an idle machine.
+# Usage, from anywhere: postprocess/benchmark_elliptical_convergence.sh [BUILD [OUT]]
+# (defaults: build, output/benchmark-elliptical-convergence, both from the repository root)
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="$(realpath "${1:-$root/build}")"
+out="$(realpath -m "${2:-$root/output/benchmark-elliptical-convergence}")"
+[ -x "$build/penny" ] || { echo "benchmark_elliptical_convergence.sh: no penny in '$build'" >&2; exit 2; }
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+mkdir -p "$out"
+# Sets the entry of the shipped scene whose line starts with NAME (after
+# "set ") to VALUE in the run's copy, or stops if there is no such line.
+set_entry() {
+  grep -q "^ *set $1" "$out/$name.prm" || { echo "benchmark_elliptical_convergence.sh: no entry '$1'" >&2; exit 2; }
+  sed -i "\|^ *set $1|s|^\( *set ${1%% =*} *=\).*|\1 $2|" "$out/$name.prm"
+}
+for aspect in 1 0.5 0.25 0.1; do
+  solver=cg-amg
+  discretisations="1:0 2:0 3:0 1:1 2:1"
+  if [ "$aspect" = 0.1 ]; then solver=direct; discretisations="1:0 2:0 1:1"; fi
+  for discretisation in $discretisations; do
+    degree=${discretisation%:*} refinements=${discretisation#*:}
+    name="b$aspect-q$degree-r$refinements"
+    cp "$root/prms/elliptical-gap.prm" "$out/$name.prm"
+    set_entry "Aspect ratio b/a" "$aspect"
+    set_entry "Global refinements" "$refinements"
+    set_entry "Polynomial degree" "$degree"
+    set_entry "Type" "$solver"
+    set_entry "Write fields" false
+    set_entry "Tolerance = 1e-4" 1 # the verification's, not the solver's
+    set_entry "Directory" "$out/$name"
+    echo "== $name ($(date +%T))"
+    mpirun -np 2 "$build/penny" "$out/$name.prm" < /dev/null > "$out/$name.log" 2>&1 || {
+      echo "benchmark_elliptical_convergence.sh: $name failed:" >&2
+      tail -3 "$out/$name.log" >&2
+      exit 1
+    }
+  done
+done
+echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg) ($(nproc) cores)"
+/usr/bin/python3 "$root/postprocess/report_elliptical_convergence.py" "$out"

@@ -1,0 +1,41 @@
+#!/usr/bin/python3
+"""The convergence table of postprocess/benchmark_elliptical_convergence.sh:
+for every run FOLDER/b<b/a>-q<degree>-r<refinements>/summary.csv, the largest
+relative K_I error over the front points on each ring (against
+Green-Sneddon/Irwin), the errors of w(0) and of the gap volume, DoFs, CG
+iterations, wall time and peak memory over both ranks.
+
+Usage: /usr/bin/python3 postprocess/report_elliptical_convergence.py FOLDER
+prints a Markdown table and writes it to FOLDER/convergence.md"""
+import csv
+import pathlib
+import re
+import sys
+
+folder = pathlib.Path(sys.argv[1])
+runs = []
+for summary_file in folder.glob("b*-q*-r*/summary.csv"):
+    aspect, degree, refinements = re.fullmatch(r"b([0-9.]+)-q(\d)-r(\d)", summary_file.parent.name).groups()
+    with open(summary_file) as table:
+        summary = {row["quantity"]: row["value"] for row in csv.DictReader(table)}
+    rings = [float(value) for key, value in summary.items() if key.startswith("largest K_I relative error")]
+    runs.append((-float(aspect), int(refinements), int(degree), summary, rings))
+if not runs:
+    sys.exit(f"report_elliptical_convergence.py: no runs in {folder}")
+
+lines = ["| b/a | degree | global refinements | DoFs | solver | largest K_I error, rings 0.1 / 0.2 / 0.4 b^2/a "
+         "| w(0) error | gap volume error | wall time (s) | peak memory, both ranks (GB) |",
+         "|---|---|---|---|---|---|---|---|---|---|"]
+for minus_aspect, refinements, degree, summary, rings in sorted(runs, key=lambda run: run[:3]):
+    solver = summary["solver"]
+    if solver.startswith("CG"):
+        solver += f", {summary['CG iterations']} its"
+    lines.append(f"| {-minus_aspect:g} | {degree} | {refinements} | {summary['DoFs']} | {solver} | "
+                 + " / ".join(f"{error:.1e}" for error in rings)
+                 + f" | {float(summary['w(0) relative error']):.1e}"
+                 + f" | {float(summary['gap volume relative error']):.1e}"
+                 + f" | {float(summary['wall time total (s)']):.0f}"
+                 + f" | {float(summary['peak memory, all ranks (MB)']) / 1024:.1f} |")
+text = "\n".join(lines) + "\n"
+(folder / "convergence.md").write_text(text)
+print(text, end="")
