@@ -12,6 +12,8 @@ import pathlib
 import re
 import sys
 
+if len(sys.argv) != 2:
+    sys.exit("usage: /usr/bin/python3 postprocess/report_elliptical_convergence.py FOLDER")
 folder = pathlib.Path(sys.argv[1])
 runs = []
 for summary_file in folder.glob("b*-q*-r*/summary.csv"):
