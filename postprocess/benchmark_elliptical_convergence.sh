@@ -6,7 +6,7 @@
 # table of the largest K_I error against DoFs, wall time and peak memory
 # (postprocess/report_elliptical_convergence.py). CG with AMG to 1e-10;
 # b/a = 0.1 on the direct solver (AMG stalls below about b/a = 0.14), whose
-# memory stops it at degree 2 without refinement. About 40 minutes on the
+# memory stops it at degree 2 without refinement. About 30 minutes on the
 # 2-core machine; run it on an idle machine.
 # Usage, from anywhere: postprocess/benchmark_elliptical_convergence.sh [BUILD [OUT]]
 # (defaults: build, output/benchmark-elliptical-convergence, both from the repository root)
