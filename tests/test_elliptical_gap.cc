@@ -175,6 +175,33 @@ BOOST_AUTO_TEST_CASE(uniform_pressure_of_either_sign)
     }
 }
 
+// The matrix-free p-multigrid solver against the direct one on the same
+// test-size mesh, degrees 1 (the coarse solve alone), 2 and 3: K_I at every
+// front point and ring and the central opening equal to 1e-8 (both solves
+// reach a relative residual of 1e-10), on 1 and 2 ranks.
+BOOST_AUTO_TEST_CASE(matrix_free_multigrid_against_the_direct_solver)
+{
+  for (const unsigned int degree : {1u, 2u, 3u})
+    {
+      std::vector<EllipticalGapMeasurement> solved;
+      for (const auto type : {LinearSolverParameters::Type::direct, LinearSolverParameters::Type::cg_multigrid})
+        {
+          EllipticalModel model                = test_size(4, {0.2, 0.4});
+          model.model.degree                   = degree;
+          model.model.linear_solver.type       = type;
+          model.model.linear_solver.tolerance  = 1e-10;
+          dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+          solved.push_back(measure_elliptical_gap(model, {1, 0.5, 1e6, 3}, timer, std::cout, nullptr));
+        }
+      BOOST_TEST(solved[1].solver == "CG + matrix-free p-multigrid");
+      BOOST_TEST(solved[1].iterations > 0u);
+      for (unsigned int ring = 0; ring < solved[0].signed_sifs.size(); ++ring)
+        for (unsigned int i = 0; i < solved[0].angles.size(); ++i)
+          BOOST_TEST(solved[1].signed_sifs[ring][i] == solved[0].signed_sifs[ring][i], tt::tolerance(1e-8));
+      BOOST_TEST(solved[1].opening_at_centre == solved[0].opening_at_centre, tt::tolerance(1e-8));
+    }
+}
+
 // The circle b = a beside the axisymmetric model of the same gap: that model
 // is within 2e-3 of Sneddon's 2 p sqrt(a/pi) (the free cylinder R = H = 10 a
 // raises K_I by 1.1e-3), the test-size 3D model within its 6e-2.

@@ -1,6 +1,7 @@
 #include "fe/linear_elastic_system.h"
 
 #include "fe/boundary_faces.h"
+#include "fe/matrix_free_elasticity.h"
 #include "fe/rigid_body_modes.h"
 #include "fe/serial_cholesky.h"
 #include "input/input_error.h"
@@ -55,6 +56,8 @@ namespace penny
         linear_solver(linear_solver), zero_displacements(std::move(zero_displacements)), timer(timer),
         dof_handler(triangulation)
   {
+    if (matrix_free() && (!std::is_same_v<Kinematics, Solid> || this->cell_degree))
+      throw std::invalid_argument("the matrix-free solver serves 3D models with one degree on every cell");
     setup();
   }
 
@@ -81,7 +84,8 @@ namespace penny
   template <typename Kinematics> void LinearElasticSystem<Kinematics>::setup()
   {
     distribute_and_constrain();
-    assemble_matrix();
+    if (!matrix_free())
+      assemble_matrix();
     factorise();
   }
 
@@ -89,6 +93,8 @@ namespace penny
   {
     if (linear_solver.type == LinearSolverParameters::Type::cg_amg)
       return "CG + AMG";
+    if (linear_solver.type == LinearSolverParameters::Type::cg_multigrid)
+      return "CG + matrix-free p-multigrid";
     return Utilities::MPI::n_mpi_processes(communicator) == 1 ? "CHOLMOD" : "MUMPS";
   }
 
@@ -100,6 +106,7 @@ namespace penny
     cholesky.reset();
     mumps.reset();
     amg.clear();
+    operator_without_matrix.reset();
     if (cell_degree)
       for (const auto &cell : dof_handler.active_cell_iterators())
         if (cell->is_locally_owned())
@@ -108,18 +115,29 @@ namespace penny
     owned = dof_handler.locally_owned_dofs();
     DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
 
-    constraints.clear();
-    constraints.reinit(relevant);
-    DoFTools::make_hanging_node_constraints(dof_handler, constraints);
-    for (const auto &[boundary, components] : zero_displacements)
-      VectorTools::interpolate_boundary_values(dof_handler, boundary, Functions::ZeroFunction<dim>(dim),
-                                               constraints, components);
-    constraints.close();
+    constrain(dof_handler, constraints);
+    if (matrix_free())
+      return;
 
     DynamicSparsityPattern pattern(relevant);
     DoFTools::make_sparsity_pattern(dof_handler, pattern, constraints, false);
     SparsityTools::distribute_sparsity_pattern(pattern, owned, get_communicator(), relevant);
     stiffness.reinit(owned, owned, pattern, get_communicator());
+  }
+
+  template <typename Kinematics>
+  void LinearElasticSystem<Kinematics>::constrain(const DoFHandler<dim> &dofs,
+                                                  AffineConstraints<double> &constraints) const
+  {
+    IndexSet dofs_relevant;
+    DoFTools::extract_locally_relevant_dofs(dofs, dofs_relevant);
+    constraints.clear();
+    constraints.reinit(dofs_relevant);
+    DoFTools::make_hanging_node_constraints(dofs, constraints);
+    for (const auto &[boundary, components] : zero_displacements)
+      VectorTools::interpolate_boundary_values(dofs, boundary, Functions::ZeroFunction<dim>(dim), constraints,
+                                               components);
+    constraints.close();
   }
 
   // a(u, v) = int sigma(u):e(v) dmu, dmu the volume element of the kinematics.
@@ -221,6 +239,15 @@ namespace penny
 
   template <typename Kinematics> void LinearElasticSystem<Kinematics>::build_solver()
   {
+    if constexpr (std::is_same_v<Kinematics, Solid>)
+      if (matrix_free())
+        {
+          operator_without_matrix = std::make_unique<MatrixFreeElasticity>(
+              dof_handler, constraints, mapping[0],
+              [this](const DoFHandler<dim> &dofs, AffineConstraints<double> &c) { constrain(dofs, c); },
+              elasticity);
+          return;
+        }
     if (linear_solver.type == LinearSolverParameters::Type::direct)
       {
         if (Utilities::MPI::n_mpi_processes(get_communicator()) == 1)
@@ -275,20 +302,28 @@ namespace penny
   void LinearElasticSystem<Kinematics>::apply_inverse(TrilinosWrappers::MPI::Vector       &x,
                                                       const TrilinosWrappers::MPI::Vector &b)
   {
-    if (linear_solver.type == LinearSolverParameters::Type::cg_amg)
+    if (linear_solver.type != LinearSolverParameters::Type::direct)
       {
         // CG aims at half the tolerance: the residual recomputed in solve() differs by rounding.
         SolverControl control(linear_solver.max_iterations, 0.5 * linear_solver.tolerance * b.l2_norm(),
                               false, false);
-        SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
-        cg.connect_condition_number_slot([this](const double kappa) { report.condition_estimate = kappa; });
+        const auto condition = [this](const double kappa) { report.condition_estimate = kappa; };
         try
           {
-            cg.solve(stiffness, x, b, amg);
+            if (operator_without_matrix)
+              operator_without_matrix->solve(x, b, control, condition);
+            else
+              {
+                SolverCG<TrilinosWrappers::MPI::Vector> cg(control);
+                cg.connect_condition_number_slot(condition);
+                cg.solve(stiffness, x, b, amg);
+              }
           }
         catch (const SolverControl::NoConvergence &failure)
           {
-            throw LinearSolverFailure("solve: CG with AMG did not converge in " +
+            if (!std::isfinite(failure.last_residual))
+              throw LinearSolverFailure("solve: " + solver_name() + " broke down: the residual is NaN or Inf");
+            throw LinearSolverFailure("solve: " + solver_name() + " did not converge in " +
                                       std::to_string(failure.last_step) + " iterations, its limit");
           }
         report.iterations = control.last_step();
@@ -384,7 +419,7 @@ namespace penny
     // 6, which a step does not lower).
     TrilinosWrappers::MPI::Vector residual(owned, get_communicator()), correction(residual);
     const auto                    relative_residual = [&]() {
-      stiffness.vmult(residual, u);
+      vmult(residual, u);
       residual.sadd(-1., 1., rhs);
       return residual.l2_norm() / load_norm;
     };
@@ -427,6 +462,16 @@ namespace penny
     DisplacementVector ghosted(owned, relevant, get_communicator());
     ghosted = u;
     return ghosted;
+  }
+
+  template <typename Kinematics>
+  void LinearElasticSystem<Kinematics>::vmult(TrilinosWrappers::MPI::Vector       &dst,
+                                              const TrilinosWrappers::MPI::Vector &src) const
+  {
+    if (operator_without_matrix)
+      operator_without_matrix->vmult(dst, src);
+    else
+      stiffness.vmult(dst, src);
   }
 
   template class LinearElasticSystem<Axisymmetric>;

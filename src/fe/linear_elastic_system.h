@@ -46,8 +46,9 @@ namespace penny
   {
     enum class Type
     {
-      direct, // CHOLMOD on one rank, MUMPS on several
-      cg_amg  // conjugate gradients with Trilinos' algebraic multigrid
+      direct,      // CHOLMOD on one rank, MUMPS on several
+      cg_amg,      // conjugate gradients with Trilinos' algebraic multigrid
+      cg_multigrid // conjugate gradients with matrix-free p-multigrid (3D, one degree on every cell)
     };
     Type         type;
     double       tolerance; // relative residual |A u - b|/|b| every solve must reach
@@ -90,8 +91,10 @@ namespace penny
 
   // The sparse Cholesky factors of the stiffness matrix on one rank (CHOLMOD).
   struct SerialCholesky;
+  class MatrixFreeElasticity;
 
-  // "CHOLMOD" (direct, one MPI rank), "MUMPS" (direct, several) or "CG + AMG":
+  // "CHOLMOD" (direct, one MPI rank), "MUMPS" (direct, several), "CG + AMG" or
+  // "CG + matrix-free p-multigrid":
   // the solver of a system on the ranks of `communicator`.
   std::string solver_name(const LinearSolverParameters &linear_solver, MPI_Comm communicator);
 
@@ -145,13 +148,18 @@ namespace penny
     const dealii::Triangulation<dim> &get_triangulation() const { return dof_handler.get_triangulation(); }
     MPI_Comm get_communicator() const { return get_triangulation().get_communicator(); }
 
-    // Entries of the stiffness matrix, all ranks together.
+    // Entries of the stiffness matrix, all ranks together (none matrix-free).
     std::size_t n_matrix_entries() const { return stiffness.n_nonzero_elements(); }
 
     std::string solver_name() const { return penny::solver_name(linear_solver, get_communicator()); }
 
   private:
     void distribute_and_constrain();
+    // The zero displacements and hanging nodes of one DoFHandler on the mesh.
+    void constrain(const dealii::DoFHandler<dim> &dofs, dealii::AffineConstraints<double> &constraints) const;
+    bool matrix_free() const { return linear_solver.type == LinearSolverParameters::Type::cg_multigrid; }
+    // A u, assembled or matrix-free.
+    void vmult(dealii::TrilinosWrappers::MPI::Vector &dst, const dealii::TrilinosWrappers::MPI::Vector &src) const;
     void assemble_matrix();
     void factorise();
     void build_solver();
@@ -177,6 +185,8 @@ namespace penny
     dealii::SolverControl                                   mumps_control;
     std::unique_ptr<dealii::TrilinosWrappers::SolverDirect> mumps;
     dealii::TrilinosWrappers::PreconditionAMG               amg;
+    // The matrix-free operator with its multigrid, instead of the matrix (3D).
+    std::unique_ptr<MatrixFreeElasticity> operator_without_matrix;
 
     SolveReport report{};
   };

@@ -59,7 +59,7 @@ namespace penny
   void elliptical_model_sections(Sections &sections, EllipticalModel &model)
   {
     auto &mesh = model.model.mesh;
-    elastic_model_sections(sections, model.model, false);
+    elastic_model_sections(sections, model.model, ModelDimension::three);
     sections.subsection("Elliptical model", [&](Entries &entries) {
       entries.number("Box width R/a", mesh.domain_width, 40, at_least(2.8),
                      "The quarter model reaches x = R and y = R; free there. Units: a.");

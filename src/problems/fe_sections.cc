@@ -4,14 +4,15 @@
 
 namespace penny
 {
-  void elastic_model_sections(Sections &sections, ElasticModelParameters &model, const bool graded_degree)
+  void elastic_model_sections(Sections &sections, ElasticModelParameters &model,
+                              const ModelDimension dimension)
   {
     using Type = LinearSolverParameters::Type;
     material_section(sections, model.material);
     sections.subsection("Finite element", [&](Entries &entries) {
       entries.integer("Polynomial degree", model.degree, 4u, 1u, 8u,
                       "Degree of the continuous Lagrange elements of the displacement. Units: none.");
-      if (graded_degree)
+      if (dimension == ModelDimension::two)
         entries.integer(
             "Degree grading", model.levels_per_degree, 0u, 0u, 64u,
             "Tip refinement levels per step down in degree. Cells b/2^k wide (b = c, or min(c, lambda/2 - "
@@ -20,12 +21,18 @@ namespace penny
     });
     sections.subsection("Linear solver", [&](Entries &entries) {
       auto &solver = model.linear_solver;
-      entries.choice(
-          "Type", solver.type, Type::direct,
-          EnumNames<Type>{{"direct", Type::direct}, {"cg-amg", Type::cg_amg}},
-          "direct: sparse Cholesky (CHOLMOD) on one MPI rank, sparse LU (MUMPS through Trilinos Amesos) on "
-          "several. cg-amg: conjugate gradients preconditioned with Trilinos' algebraic multigrid, for "
-          "large meshes.");
+      EnumNames<Type> types{{"direct", Type::direct}, {"cg-amg", Type::cg_amg}};
+      std::string     help = "direct: sparse Cholesky (CHOLMOD) on one MPI rank, sparse LU (MUMPS through Trilinos "
+                             "Amesos) on several. cg-amg: conjugate gradients preconditioned with Trilinos' "
+                             "algebraic multigrid, for large meshes.";
+      if (dimension == ModelDimension::three)
+        {
+          types.emplace_back("cg-multigrid", Type::cg_multigrid);
+          help += " cg-multigrid: conjugate gradients preconditioned with polynomial multigrid, the operator "
+                  "evaluated cell by cell without a matrix (degrees p, p-1, ..., 1, Chebyshev smoothing, "
+                  "a direct solve at degree 1): the memory of a few vectors, for high degrees.";
+        }
+      entries.choice("Type", solver.type, Type::direct, types, help);
       entries.number("Tolerance", solver.tolerance, 1e-9, interval("(]", 0, 1),
                      "Relative residual |A u - b|/|b| the iterative solver must reach; a direct solve that "
                      "misses it is an error too. Units: none.");

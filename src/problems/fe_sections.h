@@ -8,7 +8,13 @@
 
 namespace penny
 {
-  // Material, Finite element (with its Degree grading for the models that
-  // grade the degree towards a crack tip) and Linear solver.
-  void elastic_model_sections(Sections &sections, ElasticModelParameters &model, bool graded_degree);
+  // Material, Finite element and Linear solver. The 2D models grade the
+  // degree towards a crack tip (Degree grading); the 3D models keep one
+  // degree and may solve without a matrix (Type = cg-multigrid).
+  enum class ModelDimension
+  {
+    two,
+    three
+  };
+  void elastic_model_sections(Sections &sections, ElasticModelParameters &model, ModelDimension dimension);
 } // namespace penny

@@ -171,7 +171,7 @@ namespace penny
   {
     geometry_section(sections, model.geometry);
     mesh_section(sections, model.mesh);
-    elastic_model_sections(sections, model, true);
+    elastic_model_sections(sections, model, ModelDimension::two);
     sections.check([&] {
       check_model_size(model, model_cells(model));
       if (model.mesh.generator == MeshParameters::Generator::gmsh)

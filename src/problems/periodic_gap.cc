@@ -20,7 +20,7 @@ namespace penny
 
   void PeriodicGapInput::sections(Sections &sections)
   {
-    elastic_model_sections(sections, model, true);
+    elastic_model_sections(sections, model, ModelDimension::two);
     sections.subsection("Periodic gap", [&](Entries &entries) {
       // Bounded so that no product the solver forms overflows, and the mesh,
       // whose coarse cells are at most lambda/4 wide, stays small.

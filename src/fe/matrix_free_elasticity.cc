@@ -1,0 +1,268 @@
+#include "fe/matrix_free_elasticity.h"
+
+#include <deal.II/base/quadrature_lib.h>
+#include <deal.II/dofs/dof_tools.h>
+#include <deal.II/fe/fe_q.h>
+#include <deal.II/fe/fe_system.h>
+#include <deal.II/lac/diagonal_matrix.h>
+#include <deal.II/lac/dynamic_sparsity_pattern.h>
+#include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/lac/precondition.h>
+#include <deal.II/lac/solver_cg.h>
+#include <deal.II/lac/sparsity_tools.h>
+#include <deal.II/lac/trilinos_solver.h>
+#include <deal.II/lac/trilinos_sparse_matrix.h>
+#include <deal.II/matrix_free/fe_evaluation.h>
+#include <deal.II/matrix_free/matrix_free.h>
+#include <deal.II/matrix_free/tools.h>
+#include <deal.II/multigrid/mg_coarse.h>
+#include <deal.II/multigrid/mg_matrix.h>
+#include <deal.II/multigrid/mg_smoother.h>
+#include <deal.II/multigrid/mg_transfer_global_coarsening.h>
+#include <deal.II/multigrid/multigrid.h>
+
+#include <algorithm>
+
+namespace penny
+{
+  using namespace dealii;
+
+  namespace
+  {
+    using Vector = LinearAlgebra::distributed::Vector<double>;
+    // The degree is a run-time value: deal.II dispatches to its precompiled
+    // kernels of degrees 1 to 6 (and p + 2 points), a generic one above.
+    using Evaluation = FEEvaluation<3, -1, 0, 3, double>;
+
+    // A(u) on one degree's DoFHandler, the identity on constrained entries.
+    class ElasticOperator : public Subscriptor
+    {
+    public:
+      using value_type = double;
+
+      void reinit(const Mapping<3> &mapping, const DoFHandler<3> &dof_handler,
+                  const AffineConstraints<double> &constraints, const IsotropicElasticity &elasticity)
+      {
+        this->elasticity = elasticity;
+        MatrixFree<3, double>::AdditionalData data;
+        data.tasks_parallel_scheme = MatrixFree<3, double>::AdditionalData::none; // MPI ranks, not threads
+        data.mapping_update_flags  = update_gradients;
+        matrix_free.reinit(mapping, dof_handler, constraints, QGauss<1>(dof_handler.get_fe().degree + 2), data);
+      }
+
+      void initialize_dof_vector(Vector &v) const { matrix_free.initialize_dof_vector(v); }
+      types::global_dof_index m() const { return matrix_free.get_dof_handler().n_dofs(); }
+      // Chebyshev's interface names the entries, for a diagonal not given to
+      // it; ours always is (compute_inverse_diagonal).
+      double el(types::global_dof_index, types::global_dof_index) const
+      {
+        throw std::logic_error("a matrix-free operator has no entries to read");
+      }
+
+      void vmult(Vector &dst, const Vector &src) const
+      {
+        matrix_free.cell_loop(&ElasticOperator::apply_on_cells, this, dst, src, true);
+        for (const unsigned int i : matrix_free.get_constrained_dofs())
+          dst.local_element(i) = src.local_element(i);
+      }
+      void Tvmult(Vector &dst, const Vector &src) const { vmult(dst, src); }
+
+      // 1/A_ii, 1 on the constrained entries: Chebyshev's preconditioner.
+      void compute_inverse_diagonal(Vector &inverse) const
+      {
+        initialize_dof_vector(inverse);
+        MatrixFreeTools::compute_diagonal(matrix_free, inverse, &ElasticOperator::integrate, this);
+        for (const unsigned int i : matrix_free.get_constrained_dofs())
+          inverse.local_element(i) = 1;
+        // A mapped cell turned inside out at a quadrature point (det J < 0)
+        // makes the operator indefinite; CG cannot solve it.
+        const unsigned int n_negative = Utilities::MPI::sum(
+            static_cast<unsigned int>(std::count_if(inverse.begin(), inverse.end(), [](double d) { return !(d > 0); })),
+            inverse.get_mpi_communicator());
+        if (n_negative > 0)
+          throw std::runtime_error(
+              "solve: the degree-" + std::to_string(matrix_free.get_dof_handler().get_fe().degree) +
+              " operator has " + std::to_string(n_negative) +
+              " diagonal entries <= 0: mapped cells are inverted at quadrature points, the stiffness is not "
+              "positive definite (a mesh too slender for this aspect ratio)");
+        for (double &entry : inverse)
+          entry = 1 / entry;
+      }
+
+      // The assembled matrix, for the coarsest degree's direct solve.
+      void assemble(TrilinosWrappers::SparseMatrix &matrix, const AffineConstraints<double> &constraints) const
+      {
+        const DoFHandler<3> &dof_handler = matrix_free.get_dof_handler();
+        const MPI_Comm       communicator = dof_handler.get_communicator();
+        IndexSet             relevant;
+        DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
+        DynamicSparsityPattern pattern(relevant);
+        DoFTools::make_sparsity_pattern(dof_handler, pattern, constraints, false);
+        SparsityTools::distribute_sparsity_pattern(pattern, dof_handler.locally_owned_dofs(), communicator,
+                                                   relevant);
+        matrix.reinit(dof_handler.locally_owned_dofs(), dof_handler.locally_owned_dofs(), pattern,
+                      communicator);
+        MatrixFreeTools::compute_matrix(matrix_free, constraints, matrix, &ElasticOperator::integrate, this);
+      }
+
+    private:
+      // The cell's sigma(u) : e(v) from the values in `phi`, integrated back into it.
+      void integrate(Evaluation &phi) const
+      {
+        phi.evaluate(EvaluationFlags::gradients);
+        for (const unsigned int q : phi.quadrature_point_indices())
+          {
+            const auto e = phi.get_symmetric_gradient(q);
+            phi.submit_symmetric_gradient(2 * elasticity.mu * e +
+                                              elasticity.lambda * trace(e) *
+                                                  unit_symmetric_tensor<3, VectorizedArray<double>>(),
+                                          q);
+          }
+        phi.integrate(EvaluationFlags::gradients);
+      }
+
+      void apply_on_cells(const MatrixFree<3, double> &, Vector &dst, const Vector &src,
+                          const std::pair<unsigned int, unsigned int> &cells) const
+      {
+        Evaluation phi(matrix_free);
+        for (unsigned int cell = cells.first; cell < cells.second; ++cell)
+          {
+            phi.reinit(cell);
+            phi.read_dof_values(src);
+            integrate(phi);
+            phi.distribute_local_to_global(dst);
+          }
+      }
+
+      MatrixFree<3, double> matrix_free;
+      IsotropicElasticity   elasticity{};
+    };
+
+    // The coarsest degree solved exactly: MUMPS' factors of its matrix.
+    class DirectCoarseSolve : public MGCoarseGridBase<Vector>
+    {
+    public:
+      explicit DirectCoarseSolve(const TrilinosWrappers::SparseMatrix &matrix)
+          : solver(control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"))
+      {
+        solver.initialize(matrix);
+      }
+
+      void operator()(const unsigned int, Vector &dst, const Vector &src) const override { solver.solve(dst, src); }
+
+    private:
+      SolverControl                          control;
+      mutable TrilinosWrappers::SolverDirect solver;
+    };
+
+    using Smoother = PreconditionChebyshev<ElasticOperator, Vector, DiagonalMatrix<Vector>>;
+    using Transfer = MGTransferGlobalCoarsening<3, Vector>;
+
+    void copy(Vector &dst, const TrilinosWrappers::MPI::Vector &src)
+    {
+      for (const auto i : src.locally_owned_elements())
+        dst[i] = src[i];
+    }
+
+    void copy(TrilinosWrappers::MPI::Vector &dst, const Vector &src)
+    {
+      for (const auto i : dst.locally_owned_elements())
+        dst[i] = src[i];
+      dst.compress(VectorOperation::insert);
+    }
+  } // namespace
+
+  // Level l carries the degree l + 1; the finest is the system's own.
+  struct MatrixFreeElasticity::Hierarchy
+  {
+    std::vector<std::unique_ptr<DoFHandler<3>>>             coarser_dofs;
+    std::vector<std::unique_ptr<AffineConstraints<double>>> coarser_constraints;
+    MGLevelObject<ElasticOperator>                          operators;
+    MGLevelObject<MGTwoLevelTransfer<3, Vector>>            transfers;
+    std::unique_ptr<Transfer>                               transfer;
+    TrilinosWrappers::SparseMatrix                          coarse_matrix;
+    std::unique_ptr<DirectCoarseSolve>                      coarse;
+    mg::Matrix<Vector>                                      level_matrices;
+    MGSmootherPrecondition<ElasticOperator, Smoother, Vector> smoother;
+    std::unique_ptr<Multigrid<Vector>>                        multigrid;
+    std::unique_ptr<PreconditionMG<3, Vector, Transfer>>      preconditioner;
+  };
+
+  MatrixFreeElasticity::MatrixFreeElasticity(const DoFHandler<3> &dof_handler,
+                                             const AffineConstraints<double> &constraints,
+                                             const Mapping<3> &mapping, const Constrain &constrain,
+                                             const IsotropicElasticity &elasticity)
+      : hierarchy(std::make_unique<Hierarchy>())
+  {
+    Hierarchy         &h    = *hierarchy;
+    const unsigned int top  = dof_handler.get_fe().degree - 1;
+    std::vector<const DoFHandler<3> *>             dofs(top + 1, &dof_handler);
+    std::vector<const AffineConstraints<double> *> level_constraints(top + 1, &constraints);
+    for (unsigned int level = 0; level < top; ++level)
+      {
+        auto coarser = std::make_unique<DoFHandler<3>>(dof_handler.get_triangulation());
+        coarser->distribute_dofs(FESystem<3>(FE_Q<3>(level + 1), 3));
+        auto coarser_constraints = std::make_unique<AffineConstraints<double>>();
+        constrain(*coarser, *coarser_constraints);
+        dofs[level]              = coarser.get();
+        level_constraints[level] = coarser_constraints.get();
+        h.coarser_dofs.push_back(std::move(coarser));
+        h.coarser_constraints.push_back(std::move(coarser_constraints));
+      }
+
+    h.operators.resize(0, top);
+    h.transfers.resize(0, top);
+    MGLevelObject<Smoother::AdditionalData> smoothing(0, top);
+    for (unsigned int level = 0; level <= top; ++level)
+      {
+        h.operators[level].reinit(mapping, *dofs[level], *level_constraints[level], elasticity);
+        if (level > 0)
+          h.transfers[level].reinit(*dofs[level], *dofs[level - 1], *level_constraints[level],
+                                    *level_constraints[level - 1]);
+        // Chebyshev of degree 5 on the upper 1/20 of the spectrum, its bound
+        // from 20 CG steps (the choices of deal.II's matrix-free tutorials).
+        smoothing[level].smoothing_range     = 20;
+        smoothing[level].degree              = 5;
+        smoothing[level].eig_cg_n_iterations = 20;
+        smoothing[level].preconditioner      = std::make_shared<DiagonalMatrix<Vector>>();
+        h.operators[level].compute_inverse_diagonal(smoothing[level].preconditioner->get_vector());
+      }
+    h.transfer = std::make_unique<Transfer>(
+        h.transfers, [&h](const unsigned int level, Vector &v) { h.operators[level].initialize_dof_vector(v); });
+
+    h.operators[0].assemble(h.coarse_matrix, *level_constraints[0]);
+    h.coarse = std::make_unique<DirectCoarseSolve>(h.coarse_matrix);
+    h.level_matrices.initialize(h.operators);
+    h.smoother.initialize(h.operators, smoothing);
+    h.multigrid = std::make_unique<Multigrid<Vector>>(h.level_matrices, *h.coarse, *h.transfer, h.smoother,
+                                                      h.smoother, 0, top);
+    h.preconditioner = std::make_unique<PreconditionMG<3, Vector, Transfer>>(dof_handler, *h.multigrid, *h.transfer);
+  }
+
+  MatrixFreeElasticity::~MatrixFreeElasticity() = default;
+
+  void MatrixFreeElasticity::vmult(TrilinosWrappers::MPI::Vector &dst, const TrilinosWrappers::MPI::Vector &src) const
+  {
+    const ElasticOperator &fine = hierarchy->operators[hierarchy->operators.max_level()];
+    Vector                 u, a_u;
+    fine.initialize_dof_vector(u);
+    fine.initialize_dof_vector(a_u);
+    copy(u, src);
+    fine.vmult(a_u, u);
+    copy(dst, a_u);
+  }
+
+  void MatrixFreeElasticity::solve(TrilinosWrappers::MPI::Vector &x, const TrilinosWrappers::MPI::Vector &b,
+                                   SolverControl &control, const std::function<void(double)> &condition)
+  {
+    const ElasticOperator &fine = hierarchy->operators[hierarchy->operators.max_level()];
+    Vector                 u, load;
+    fine.initialize_dof_vector(u);
+    fine.initialize_dof_vector(load);
+    copy(load, b);
+    SolverCG<Vector> cg(control);
+    cg.connect_condition_number_slot(condition);
+    cg.solve(fine, u, load, *hierarchy->preconditioner);
+    copy(x, u);
+  }
+} // namespace penny
