@@ -2,12 +2,14 @@
 # Convergence of the 3D elliptical gap under uniform pressure, in p and in h,
 # for b/a = 1, 0.5, 0.25 and 0.1: prms/elliptical-gap.prm (default mesh, 17
 # front points, rings 0.1, 0.2, 0.4 b^2/a) at degrees 1, 2, 3 and at degrees
-# 1, 2 with one global refinement, on 2 MPI ranks without fields; then the
-# table of the largest K_I error against DoFs, wall time and peak memory
-# (postprocess/report_elliptical_convergence.py). CG with AMG to 1e-10;
-# b/a = 0.1 on the direct solver (AMG stalls below about b/a = 0.14), whose
-# memory stops it at degree 2 without refinement. About 30 minutes on the
-# 2-core machine; run it on an idle machine.
+# 1, 2 with one global refinement with CG + AMG, and at degrees 4 and 5 with
+# the matrix-free CG + p-multigrid, all to 1e-10, on 2 MPI ranks without
+# fields; then the table of the largest K_I error against DoFs, wall time and
+# peak memory (postprocess/report_elliptical_convergence.py). b/a = 0.1 on
+# the direct solver, Q1 and Q2 only (at Q2 and above the mesh's mapped cells
+# are inverted there: the matrix-free solver refuses it, MUMPS solves the
+# indefinite system). About 30 minutes for the AMG rows and 45 for the
+# matrix-free ones on the 2-core machine; run it on an idle machine.
 # Usage, from anywhere: postprocess/benchmark_elliptical_convergence.sh [BUILD [OUT]]
 # (defaults: build, output/benchmark-elliptical-convergence, both from the repository root)
 set -euo pipefail
@@ -24,11 +26,11 @@ set_entry() {
   sed -i "\|^ *set $1|s|^\( *set ${1%% =*} *=\).*|\1 $2|" "$out/$name.prm"
 }
 for aspect in 1 0.5 0.25 0.1; do
-  solver=cg-amg
-  discretisations="1:0 2:0 3:0 1:1 2:1"
-  if [ "$aspect" = 0.1 ]; then solver=direct; discretisations="1:0 2:0 1:1"; fi
+  # degree:global refinements:solver
+  discretisations="1:0:cg-amg 2:0:cg-amg 3:0:cg-amg 1:1:cg-amg 2:1:cg-amg 4:0:cg-multigrid 5:0:cg-multigrid"
+  if [ "$aspect" = 0.1 ]; then discretisations="1:0:direct 2:0:direct 1:1:direct"; fi
   for discretisation in $discretisations; do
-    degree=${discretisation%:*} refinements=${discretisation#*:}
+    IFS=: read -r degree refinements solver <<< "$discretisation"
     name="b$aspect-q$degree-r$refinements"
     cp "$root/prms/elliptical-gap.prm" "$out/$name.prm"
     set_entry "Aspect ratio b/a" "$aspect"

@@ -17,6 +17,7 @@ for ranks in 1 2; do
   sed -e 's/^\( *set Polynomial degree *=\).*/\1 2/' \
       -e 's/^\( *set Global refinements *=\).*/\1 1/' \
       -e 's/^\( *set Write fields *=\).*/\1 false/' \
+      -e 's/^\( *set Type *=\).*/\1 cg-amg/' \
       -e "s|^\( *set Directory *=\).*|\1 $out/elliptical-gap-$ranks-ranks|" \
       "$root/prms/elliptical-gap.prm" > "$out/elliptical-gap-$ranks-ranks.prm"
   echo "== elliptical-gap on $ranks MPI rank(s)"
