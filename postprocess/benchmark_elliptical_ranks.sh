@@ -1,10 +1,12 @@
 #!/usr/bin/env bash
-# One 3D model of a million DoFs shared by 1 and by 2 MPI ranks: the
-# elliptical gap of prms/elliptical-gap.prm at degree 2 with one global
-# refinement (40704 cells, 1,020,663 DoFs, CG with AMG to 1e-10, no fields),
-# then the wall time of each phase on both, the speed-up, and how far K_I
-# moved (postprocess/report_speed_up.py). About 9 + 5 minutes and 12 GB on
-# the 2-core machine; run it on an idle machine.
+# One 3D model of a million DoFs shared by 1 and by 2 MPI ranks, with each
+# iterative solver: the elliptical gap of prms/elliptical-gap.prm (b/a = 0.5)
+# at degree 2 with one global refinement on CG + AMG (40704 cells, 1,020,663
+# DoFs), and at degree 4 on the matrix-free CG + p-multigrid (5088 cells,
+# 1,020,663 DoFs), tolerance 1e-10, no fields; then the wall time of each
+# phase on both rank counts, the speed-up, and how far K_I moved
+# (postprocess/report_speed_up.py). About 14 minutes and 12 GB (AMG) plus
+# 11 minutes and 1.3 GB (matrix-free) on the 2-core machine; run it idle.
 # Usage, from anywhere: postprocess/benchmark_elliptical_ranks.sh [BUILD [OUT]]
 # (defaults: build, output/benchmark-elliptical-ranks, both from the repository root)
 set -euo pipefail
@@ -13,14 +15,19 @@ build="$(realpath "${1:-$root/build}")"
 out="$(realpath -m "${2:-$root/output/benchmark-elliptical-ranks}")"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mkdir -p "$out"
-for ranks in 1 2; do
-  sed -e 's/^\( *set Polynomial degree *=\).*/\1 2/' \
-      -e 's/^\( *set Global refinements *=\).*/\1 1/' \
-      -e 's/^\( *set Write fields *=\).*/\1 false/' \
-      -e 's/^\( *set Type *=\).*/\1 cg-amg/' \
-      -e "s|^\( *set Directory *=\).*|\1 $out/elliptical-gap-$ranks-ranks|" \
-      "$root/prms/elliptical-gap.prm" > "$out/elliptical-gap-$ranks-ranks.prm"
-  echo "== elliptical-gap on $ranks MPI rank(s)"
-  mpirun -np "$ranks" "$build/penny" "$out/elliptical-gap-$ranks-ranks.prm" < /dev/null
+# name:degree:global refinements:solver
+for model in amg:2:1:cg-amg matrix-free:4:0:cg-multigrid; do
+  IFS=: read -r name degree refinements solver <<< "$model"
+  for ranks in 1 2; do
+    run="elliptical-gap-$name-$ranks-ranks"
+    sed -e "s/^\( *set Polynomial degree *=\).*/\1 $degree/" \
+        -e "s/^\( *set Global refinements *=\).*/\1 $refinements/" \
+        -e 's/^\( *set Write fields *=\).*/\1 false/' \
+        -e "s/^\( *set Type *=\).*/\1 $solver/" \
+        -e "s|^\( *set Directory *=\).*|\1 $out/$run|" \
+        "$root/prms/elliptical-gap.prm" > "$out/$run.prm"
+    echo "== elliptical-gap, $name, on $ranks MPI rank(s)"
+    mpirun -np "$ranks" "$build/penny" "$out/$run.prm" < /dev/null
+  done
 done
-/usr/bin/python3 "$root/postprocess/report_speed_up.py" "$out" elliptical-gap
+/usr/bin/python3 "$root/postprocess/report_speed_up.py" "$out" elliptical-gap-amg elliptical-gap-matrix-free

@@ -184,12 +184,13 @@ BOOST_AUTO_TEST_CASE(matrix_free_multigrid_against_the_direct_solver)
   for (const unsigned int degree : {1u, 2u, 3u})
     {
       std::vector<EllipticalGapMeasurement> solved;
-      for (const auto type : {LinearSolverParameters::Type::direct, LinearSolverParameters::Type::cg_multigrid})
+      for (const auto type :
+           {LinearSolverParameters::Type::direct, LinearSolverParameters::Type::cg_multigrid})
         {
-          EllipticalModel model                = test_size(4, {0.2, 0.4});
-          model.model.degree                   = degree;
-          model.model.linear_solver.type       = type;
-          model.model.linear_solver.tolerance  = 1e-10;
+          EllipticalModel model               = test_size(4, {0.2, 0.4});
+          model.model.degree                  = degree;
+          model.model.linear_solver.type      = type;
+          model.model.linear_solver.tolerance = 1e-10;
           dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
           solved.push_back(measure_elliptical_gap(model, {1, 0.5, 1e6, 3}, timer, std::cout, nullptr));
         }

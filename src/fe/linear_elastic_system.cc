@@ -126,7 +126,7 @@ namespace penny
   }
 
   template <typename Kinematics>
-  void LinearElasticSystem<Kinematics>::constrain(const DoFHandler<dim> &dofs,
+  void LinearElasticSystem<Kinematics>::constrain(const DoFHandler<dim>     &dofs,
                                                   AffineConstraints<double> &constraints) const
   {
     IndexSet dofs_relevant;
@@ -307,7 +307,7 @@ namespace penny
         // CG aims at half the tolerance: the residual recomputed in solve() differs by rounding.
         SolverControl control(linear_solver.max_iterations, 0.5 * linear_solver.tolerance * b.l2_norm(),
                               false, false);
-        const auto condition = [this](const double kappa) { report.condition_estimate = kappa; };
+        const auto    condition = [this](const double kappa) { report.condition_estimate = kappa; };
         try
           {
             if (operator_without_matrix)
@@ -322,7 +322,8 @@ namespace penny
         catch (const SolverControl::NoConvergence &failure)
           {
             if (!std::isfinite(failure.last_residual))
-              throw LinearSolverFailure("solve: " + solver_name() + " broke down: the residual is NaN or Inf");
+              throw LinearSolverFailure("solve: " + solver_name() +
+                                        " broke down: the residual is NaN or Inf");
             throw LinearSolverFailure("solve: " + solver_name() + " did not converge in " +
                                       std::to_string(failure.last_step) + " iterations, its limit");
           }

@@ -159,7 +159,8 @@ namespace penny
     void constrain(const dealii::DoFHandler<dim> &dofs, dealii::AffineConstraints<double> &constraints) const;
     bool matrix_free() const { return linear_solver.type == LinearSolverParameters::Type::cg_multigrid; }
     // A u, assembled or matrix-free.
-    void vmult(dealii::TrilinosWrappers::MPI::Vector &dst, const dealii::TrilinosWrappers::MPI::Vector &src) const;
+    void vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
+               const dealii::TrilinosWrappers::MPI::Vector &src) const;
     void assemble_matrix();
     void factorise();
     void build_solver();

@@ -47,10 +47,11 @@ namespace penny
         MatrixFree<3, double>::AdditionalData data;
         data.tasks_parallel_scheme = MatrixFree<3, double>::AdditionalData::none; // MPI ranks, not threads
         data.mapping_update_flags  = update_gradients;
-        matrix_free.reinit(mapping, dof_handler, constraints, QGauss<1>(dof_handler.get_fe().degree + 2), data);
+        matrix_free.reinit(mapping, dof_handler, constraints, QGauss<1>(dof_handler.get_fe().degree + 2),
+                           data);
       }
 
-      void initialize_dof_vector(Vector &v) const { matrix_free.initialize_dof_vector(v); }
+      void                    initialize_dof_vector(Vector &v) const { matrix_free.initialize_dof_vector(v); }
       types::global_dof_index m() const { return matrix_free.get_dof_handler().n_dofs(); }
       // Chebyshev's interface names the entries, for a diagonal not given to
       // it; ours always is (compute_inverse_diagonal).
@@ -76,9 +77,10 @@ namespace penny
           inverse.local_element(i) = 1;
         // A mapped cell turned inside out at a quadrature point (det J < 0)
         // makes the operator indefinite; CG cannot solve it.
-        const unsigned int n_negative = Utilities::MPI::sum(
-            static_cast<unsigned int>(std::count_if(inverse.begin(), inverse.end(), [](double d) { return !(d > 0); })),
-            inverse.get_mpi_communicator());
+        const unsigned int n_negative =
+            Utilities::MPI::sum(static_cast<unsigned int>(std::count_if(inverse.begin(), inverse.end(),
+                                                                        [](double d) { return !(d > 0); })),
+                                inverse.get_mpi_communicator());
         if (n_negative > 0)
           throw std::runtime_error(
               "solve: the degree-" + std::to_string(matrix_free.get_dof_handler().get_fe().degree) +
@@ -90,9 +92,10 @@ namespace penny
       }
 
       // The assembled matrix, for the coarsest degree's direct solve.
-      void assemble(TrilinosWrappers::SparseMatrix &matrix, const AffineConstraints<double> &constraints) const
+      void assemble(TrilinosWrappers::SparseMatrix  &matrix,
+                    const AffineConstraints<double> &constraints) const
       {
-        const DoFHandler<3> &dof_handler = matrix_free.get_dof_handler();
+        const DoFHandler<3> &dof_handler  = matrix_free.get_dof_handler();
         const MPI_Comm       communicator = dof_handler.get_communicator();
         IndexSet             relevant;
         DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
@@ -148,7 +151,10 @@ namespace penny
         solver.initialize(matrix);
       }
 
-      void operator()(const unsigned int, Vector &dst, const Vector &src) const override { solver.solve(dst, src); }
+      void operator()(const unsigned int, Vector &dst, const Vector &src) const override
+      {
+        solver.solve(dst, src);
+      }
 
     private:
       SolverControl                          control;
@@ -175,27 +181,27 @@ namespace penny
   // Level l carries the degree l + 1; the finest is the system's own.
   struct MatrixFreeElasticity::Hierarchy
   {
-    std::vector<std::unique_ptr<DoFHandler<3>>>             coarser_dofs;
-    std::vector<std::unique_ptr<AffineConstraints<double>>> coarser_constraints;
-    MGLevelObject<ElasticOperator>                          operators;
-    MGLevelObject<MGTwoLevelTransfer<3, Vector>>            transfers;
-    std::unique_ptr<Transfer>                               transfer;
-    TrilinosWrappers::SparseMatrix                          coarse_matrix;
-    std::unique_ptr<DirectCoarseSolve>                      coarse;
-    mg::Matrix<Vector>                                      level_matrices;
+    std::vector<std::unique_ptr<DoFHandler<3>>>               coarser_dofs;
+    std::vector<std::unique_ptr<AffineConstraints<double>>>   coarser_constraints;
+    MGLevelObject<ElasticOperator>                            operators;
+    MGLevelObject<MGTwoLevelTransfer<3, Vector>>              transfers;
+    std::unique_ptr<Transfer>                                 transfer;
+    TrilinosWrappers::SparseMatrix                            coarse_matrix;
+    std::unique_ptr<DirectCoarseSolve>                        coarse;
+    mg::Matrix<Vector>                                        level_matrices;
     MGSmootherPrecondition<ElasticOperator, Smoother, Vector> smoother;
     std::unique_ptr<Multigrid<Vector>>                        multigrid;
     std::unique_ptr<PreconditionMG<3, Vector, Transfer>>      preconditioner;
   };
 
-  MatrixFreeElasticity::MatrixFreeElasticity(const DoFHandler<3> &dof_handler,
+  MatrixFreeElasticity::MatrixFreeElasticity(const DoFHandler<3>             &dof_handler,
                                              const AffineConstraints<double> &constraints,
                                              const Mapping<3> &mapping, const Constrain &constrain,
                                              const IsotropicElasticity &elasticity)
       : hierarchy(std::make_unique<Hierarchy>())
   {
-    Hierarchy         &h    = *hierarchy;
-    const unsigned int top  = dof_handler.get_fe().degree - 1;
+    Hierarchy                                     &h   = *hierarchy;
+    const unsigned int                             top = dof_handler.get_fe().degree - 1;
     std::vector<const DoFHandler<3> *>             dofs(top + 1, &dof_handler);
     std::vector<const AffineConstraints<double> *> level_constraints(top + 1, &constraints);
     for (unsigned int level = 0; level < top; ++level)
@@ -227,8 +233,9 @@ namespace penny
         smoothing[level].preconditioner      = std::make_shared<DiagonalMatrix<Vector>>();
         h.operators[level].compute_inverse_diagonal(smoothing[level].preconditioner->get_vector());
       }
-    h.transfer = std::make_unique<Transfer>(
-        h.transfers, [&h](const unsigned int level, Vector &v) { h.operators[level].initialize_dof_vector(v); });
+    h.transfer = std::make_unique<Transfer>(h.transfers, [&h](const unsigned int level, Vector &v) {
+      h.operators[level].initialize_dof_vector(v);
+    });
 
     h.operators[0].assemble(h.coarse_matrix, *level_constraints[0]);
     h.coarse = std::make_unique<DirectCoarseSolve>(h.coarse_matrix);
@@ -236,12 +243,14 @@ namespace penny
     h.smoother.initialize(h.operators, smoothing);
     h.multigrid = std::make_unique<Multigrid<Vector>>(h.level_matrices, *h.coarse, *h.transfer, h.smoother,
                                                       h.smoother, 0, top);
-    h.preconditioner = std::make_unique<PreconditionMG<3, Vector, Transfer>>(dof_handler, *h.multigrid, *h.transfer);
+    h.preconditioner =
+        std::make_unique<PreconditionMG<3, Vector, Transfer>>(dof_handler, *h.multigrid, *h.transfer);
   }
 
   MatrixFreeElasticity::~MatrixFreeElasticity() = default;
 
-  void MatrixFreeElasticity::vmult(TrilinosWrappers::MPI::Vector &dst, const TrilinosWrappers::MPI::Vector &src) const
+  void MatrixFreeElasticity::vmult(TrilinosWrappers::MPI::Vector       &dst,
+                                   const TrilinosWrappers::MPI::Vector &src) const
   {
     const ElasticOperator &fine = hierarchy->operators[hierarchy->operators.max_level()];
     Vector                 u, a_u;

@@ -32,13 +32,15 @@ namespace penny
     // `dof_handler` holds one FESystem of degree p; its `constraints` (closed)
     // and `constrain` for the coarser degrees. Quadrature: p + 2 Gauss points
     // per direction, as the assembled matrix.
-    MatrixFreeElasticity(const dealii::DoFHandler<3> &dof_handler, const dealii::AffineConstraints<double> &constraints,
+    MatrixFreeElasticity(const dealii::DoFHandler<3>             &dof_handler,
+                         const dealii::AffineConstraints<double> &constraints,
                          const dealii::Mapping<3> &mapping, const Constrain &constrain,
                          const IsotropicElasticity &elasticity);
     ~MatrixFreeElasticity();
 
     // dst = A src on the unconstrained entries.
-    void vmult(dealii::TrilinosWrappers::MPI::Vector &dst, const dealii::TrilinosWrappers::MPI::Vector &src) const;
+    void vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
+               const dealii::TrilinosWrappers::MPI::Vector &src) const;
 
     // x = A^-1 b by CG to `control`'s tolerance; the estimate of the
     // preconditioned matrix's condition number goes to `condition`. Throws

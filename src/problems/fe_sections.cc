@@ -20,11 +20,12 @@ namespace penny
             "the tip carry low degrees (hp); 0 keeps the degree on every cell. Units: levels.");
     });
     sections.subsection("Linear solver", [&](Entries &entries) {
-      auto &solver = model.linear_solver;
+      auto           &solver = model.linear_solver;
       EnumNames<Type> types{{"direct", Type::direct}, {"cg-amg", Type::cg_amg}};
-      std::string     help = "direct: sparse Cholesky (CHOLMOD) on one MPI rank, sparse LU (MUMPS through Trilinos "
-                             "Amesos) on several. cg-amg: conjugate gradients preconditioned with Trilinos' "
-                             "algebraic multigrid, for large meshes.";
+      std::string     help =
+          "direct: sparse Cholesky (CHOLMOD) on one MPI rank, sparse LU (MUMPS through Trilinos "
+          "Amesos) on several. cg-amg: conjugate gradients preconditioned with Trilinos' "
+          "algebraic multigrid, for large meshes.";
       if (dimension == ModelDimension::three)
         {
           types.emplace_back("cg-multigrid", Type::cg_multigrid);
