@@ -77,13 +77,13 @@ BOOST_AUTO_TEST_CASE(quartic_expression)
 
 BOOST_AUTO_TEST_CASE(clamped_far_boundary_and_other_scales)
 {
-  auto model                          = test_size_model(20, 3);
-  model.geometry.clamped_far_boundary = true;
-  model.geometry.gap_radius           = 0.01;
-  model.geometry.domain_radius        = 10;
-  model.geometry.domain_height        = 7;
-  model.material.youngs_modulus       = 7e10;
-  model.material.poissons_ratio       = 0.2;
+  auto model                    = test_size_model(20, 3);
+  model.geometry.far_boundary   = FarBoundary::clamped;
+  model.geometry.gap_radius     = 0.01;
+  model.geometry.domain_radius  = 10;
+  model.geometry.domain_height  = 7;
+  model.material.youngs_modulus = 7e10;
+  model.material.poissons_ratio = 0.2;
   check_against_closed_form(model, default_load());
 }
 
@@ -140,4 +140,22 @@ BOOST_AUTO_TEST_CASE(csv_quotes_commas_and_quotes)
   Table table({{"ring (min(c, lambda/2 - c))"}, {"note"}});
   table.add_row({0.25, "a \"b\", c"});
   BOOST_TEST(table.csv() == "\"ring (min(c, lambda/2 - c))\",note\n0.25,\"a \"\"b\"\", c\"\n");
+}
+
+// The traction of the gap's far field on the far boundary (Far boundary =
+// far field) makes a cylinder of 10 c answer the infinite solid: K_I, w(0)
+// and the volume within 2e-5 of Sneddon's (measured at degree 4, 30 tip
+// levels: 6.9e-6; the free cylinder is off by 1.1e-3, the clamped one by
+// more), on 1 and 2 ranks alike.
+BOOST_AUTO_TEST_CASE(far_field_boundary)
+{
+  auto model                   = test_size_model(30, 4);
+  model.geometry.domain_radius = 10;
+  model.geometry.domain_height = 10;
+  model.geometry.far_boundary  = FarBoundary::far_field;
+  check_against_closed_form(model, default_load(), 2e-5);
+  model.geometry.far_boundary    = FarBoundary::free;
+  const PennyGapMeasurement free = solve(model, default_load());
+  BOOST_TEST(std::abs(free.rings.back().stress_intensity_factor / free.exact_stress_intensity_factor.value -
+                      1) > 1e-3);
 }

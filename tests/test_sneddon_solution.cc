@@ -1,7 +1,9 @@
 // Sneddon's closed forms: the exact formulas against the adaptive quadrature,
-// and a load only the quadrature handles against hand-integrated values.
+// a load only the quadrature handles against hand-integrated values, and the
+// far field of a gap.
 #define BOOST_TEST_MODULE sneddon_solution
 #define BOOST_TEST_NO_MAIN
+#include "closed_forms/gap_far_field.h"
 #include "closed_forms/sneddon_solution.h"
 #include "input/input_error.h"
 
@@ -164,4 +166,61 @@ BOOST_AUTO_TEST_CASE(bad_expression_is_an_input_error)
 {
   BOOST_CHECK_THROW(FaceLoad(load(LoadParameters::Type::expression, 1, "P * (r/"), c), InputError);
   BOOST_CHECK_THROW(FaceLoad(load(LoadParameters::Type::expression, 1, "P * x"), c), InputError);
+}
+
+// The far field of a gap (closed_forms/gap_far_field.h): a displacement whose
+// stress is the one returned (central differences), in equilibrium, with the
+// symmetry of an opening about z = 0 (u_z and the shear tractions vanish
+// there), and the tail of Sneddon's penny crack on its axis,
+//   u_z(0, z) = 2 (1 + nu) p/(pi E) {2 (1 - nu) [c - z atan(c/z)] + z [atan(c/z) - c z/(c^2 + z^2)]},
+// with the volume D = 16 (1 - nu^2) p c^3/(3 E), to (c/z)^2.
+BOOST_AUTO_TEST_CASE(gap_far_field)
+{
+  const double      E = 7e10, nu = 0.3, volume = 2e-3;
+  const GapFarField far(volume, E, nu);
+  const double      lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
+  const double      h = 1e-4;
+  for (const dealii::Point<3> &x : {dealii::Point<3>(1.3, -0.4, 0.9), dealii::Point<3>(-0.2, 2.1, -1.7)})
+    {
+      dealii::Tensor<2, 3> gradient;
+      for (unsigned int j = 0; j < 3; ++j)
+        {
+          dealii::Tensor<1, 3> dx;
+          dx[j]                 = h;
+          const auto derivative = (far.displacement(x + dx) - far.displacement(x - dx)) / (2 * h);
+          for (unsigned int i = 0; i < 3; ++i)
+            gradient[i][j] = derivative[i];
+        }
+      const auto strain = dealii::symmetrize(gradient);
+      const auto stress =
+          lambda * dealii::trace(strain) * dealii::unit_symmetric_tensor<3>() + 2 * mu * strain;
+      const auto exact = far.stress(x);
+      BOOST_TEST((stress - exact).norm() <= 1e-7 * exact.norm());
+
+      dealii::Tensor<1, 3> divergence;
+      for (unsigned int j = 0; j < 3; ++j)
+        {
+          dealii::Tensor<1, 3> dx;
+          dx[j] = h;
+          divergence +=
+              (far.stress(x + dx) - far.stress(x - dx)) / (2 * h) * dealii::Point<3>::unit_vector(j);
+        }
+      BOOST_TEST(divergence.norm() <= 1e-7 * exact.norm() / x.norm());
+    }
+
+  const dealii::Point<3> on_plane(0.8, -1.1, 0);
+  BOOST_TEST(std::abs(far.displacement(on_plane)[2]) <= 1e-15 * far.displacement(on_plane).norm());
+  BOOST_TEST(std::abs(far.stress(on_plane)[0][2]) + std::abs(far.stress(on_plane)[1][2]) <=
+             1e-15 * far.stress(on_plane).norm());
+
+  const double      p = 1e6, gap_radius = 0.01;
+  const GapFarField penny(16 * (1 - nu * nu) * p * std::pow(gap_radius, 3) / (3 * E), E, nu);
+  for (const double z : {10 * gap_radius, 100 * gap_radius})
+    {
+      const double t     = std::atan(gap_radius / z);
+      const double exact = 2 * (1 + nu) * p / (pi * E) *
+                           (2 * (1 - nu) * (gap_radius - z * t) +
+                            z * (t - gap_radius * z / (gap_radius * gap_radius + z * z)));
+      BOOST_TEST(penny.displacement({0, 0, z})[2] == exact, tt::tolerance(2 * std::pow(gap_radius / z, 2)));
+    }
 }

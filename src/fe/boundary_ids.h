@@ -13,3 +13,14 @@ namespace penny::boundary_id
   constexpr dealii::types::boundary_id far             = 4; // the truncation of the solid
   constexpr dealii::types::boundary_id second_symmetry = 5; // x = lambda/2 (periodic gap), or y = 0 (3D)
 } // namespace penny::boundary_id
+
+namespace penny
+{
+  // What holds the solid at its far boundary.
+  enum class FarBoundary
+  {
+    free,     // traction free
+    clamped,  // u = 0
+    far_field // the traction of the gap's far field (fe/far_field_correction.h)
+  };
+} // namespace penny

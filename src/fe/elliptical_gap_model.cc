@@ -13,17 +13,21 @@ namespace penny
 
   namespace
   {
-    // u_x = 0 on x = 0, u_y = 0 on y = 0, u_z = 0 on the ligament.
-    std::vector<ZeroDisplacement> zero_displacements()
+    // u_x = 0 on x = 0, u_y = 0 on y = 0, u_z = 0 on the ligament, u = 0 on
+    // clamped far faces.
+    std::vector<ZeroDisplacement> zero_displacements(const FarBoundary far_boundary)
     {
       const auto only = [](const unsigned int component) {
         std::vector<bool> mask(3, false);
         mask[component] = true;
         return ComponentMask(mask);
       };
-      return {{boundary_id::symmetry, only(0)},
-              {boundary_id::second_symmetry, only(1)},
-              {boundary_id::ligament, only(2)}};
+      std::vector<ZeroDisplacement> conditions = {{boundary_id::symmetry, only(0)},
+                                                  {boundary_id::second_symmetry, only(1)},
+                                                  {boundary_id::ligament, only(2)}};
+      if (far_boundary == FarBoundary::clamped)
+        conditions.push_back({boundary_id::far, ComponentMask()});
+      return conditions;
     }
 
     // Meshed and refined before the system distributes its degrees of freedom on it.
@@ -40,14 +44,21 @@ namespace penny
   EllipticalGapModel::EllipticalGapModel(const EllipticalGapModelParameters &parameters, TimerOutput &timer)
       : parameters(parameters), timer(timer), triangulation(MPI_COMM_WORLD),
         system(meshed(triangulation, parameters, timer), parameters.degree, parameters.degree,
-               parameters.material, parameters.linear_solver, zero_displacements(), timer),
+               parameters.material, parameters.linear_solver, zero_displacements(parameters.far_boundary),
+               timer),
         crack_front(parameters.mesh.semi_axis_a, parameters.mesh.semi_axis_b)
   {
+    if (parameters.far_boundary == FarBoundary::far_field)
+      far_field.emplace(system, boundary_id::far, parameters.material,
+                        [this](const DisplacementVector &u) { return gap_volume(u); });
   }
 
   DisplacementVector EllipticalGapModel::solve(const Traction &traction)
   {
-    return system.solve(boundary_id::gap_face, traction);
+    DisplacementVector u = system.solve(boundary_id::gap_face, traction);
+    if (far_field)
+      far_field->apply(u);
+    return u;
   }
 
   std::vector<double> EllipticalGapModel::front_vertex_angles() const

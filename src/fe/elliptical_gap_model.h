@@ -2,7 +2,8 @@
 // quarter x, y, z >= 0 of a box around the flat gap x^2/a^2 + y^2/b^2 < 1 on
 // z = 0 (doc/theory.md, section 8). u_x = 0 on the symmetry plane x = 0,
 // u_y = 0 on y = 0, u_z = 0 on the ligament, the face traction t(x, y) on
-// the gap face, the far faces free. The mesh (fe/elliptical_gap_mesh.h) has
+// the gap face, the far faces free, clamped or under the traction of the
+// gap's far field (fe/far_field_correction.h). The mesh (fe/elliptical_gap_mesh.h) has
 // the front as a line of mesh edges on a manifold and is graded towards it in
 // the coarse mesh, so that a p4est parallel::distributed::Triangulation<3>
 // holds it and refines it globally; cells, degrees of freedom and the
@@ -12,11 +13,13 @@
 #pragma once
 
 #include "fe/elliptical_gap_mesh.h"
+#include "fe/far_field_correction.h"
 #include "fe/linear_elastic_system.h"
 
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/tria.h>
 
+#include <optional>
 #include <vector>
 
 namespace penny
@@ -26,6 +29,7 @@ namespace penny
   {
     EllipticalGapMeshParameters mesh;
     unsigned int                global_refinements;
+    FarBoundary                 far_boundary = FarBoundary::free; // on the box's far faces
   };
 
   class EllipticalGapModel
@@ -58,5 +62,6 @@ namespace penny
     dealii::parallel::distributed::Triangulation<3> triangulation;
     LinearElasticSystem<Solid>                      system;
     const EllipticalFront                           crack_front;
+    std::optional<FarFieldCorrection<Solid>>        far_field;
   };
 } // namespace penny

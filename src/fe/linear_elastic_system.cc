@@ -356,10 +356,31 @@ namespace penny
   TrilinosWrappers::MPI::Vector LinearElasticSystem<Kinematics>::load_vector(const types::boundary_id face,
                                                                              const Traction &traction) const
   {
+    return face_load(face, [&](const Point<dim> &x, const Tensor<1, dim> &) {
+      Tensor<1, dim> t;
+      t[dim - 1] = traction(x);
+      return t;
+    });
+  }
+
+  template <typename Kinematics>
+  TrilinosWrappers::MPI::Vector
+  LinearElasticSystem<Kinematics>::stress_load_vector(const types::boundary_id face,
+                                                      const Stress            &stress) const
+  {
+    return face_load(face,
+                     [&](const Point<dim> &x, const Tensor<1, dim> &normal) { return stress(x) * normal; });
+  }
+
+  template <typename Kinematics>
+  TrilinosWrappers::MPI::Vector LinearElasticSystem<Kinematics>::face_load(const types::boundary_id face,
+                                                                           const FaceForce &force) const
+  {
     TimerOutput::Scope                   scope(timer, "assembly");
     TrilinosWrappers::MPI::Vector        rhs(owned, get_communicator());
     hp::FEFaceValues<dim>                fe_face(mapping, fe, face_gauss(2),
-                                                 update_values | update_quadrature_points | update_JxW_values);
+                                                 update_values | update_quadrature_points | update_normal_vectors |
+                                                     update_JxW_values);
     const FEValuesExtractors::Vector     displacement(0);
     Vector<double>                       cell_rhs;
     std::vector<types::global_dof_index> local_dofs;
@@ -369,11 +390,11 @@ namespace penny
                              local_dofs.resize(values.dofs_per_cell);
                              for (const unsigned int q : values.quadrature_point_indices())
                                {
-                                 const Point<dim> &x = values.quadrature_point(q);
-                                 const double      t = traction(x);
+                                 const Point<dim>    &x = values.quadrature_point(q);
+                                 const Tensor<1, dim> f = force(x, values.normal_vector(q)) *
+                                                          Kinematics::measure(x) * values.JxW(q);
                                  for (unsigned int i = 0; i < values.dofs_per_cell; ++i)
-                                   cell_rhs(i) += t * values[displacement].value(i, q)[dim - 1] *
-                                                  Kinematics::measure(x) * values.JxW(q);
+                                   cell_rhs(i) += f * values[displacement].value(i, q);
                                }
                              cell->get_dof_indices(local_dofs);
                              constraints.distribute_local_to_global(cell_rhs, local_dofs, rhs);

@@ -106,6 +106,8 @@ namespace penny
     // The normal traction t(x) on a face: it acts along +z on the upper half
     // model and opens the gap (Pa).
     using Traction = std::function<double(const dealii::Point<dim> &)>;
+    // A stress field sigma(x) in the kinematics' components (Pa).
+    using Stress = std::function<dealii::SymmetricTensor<2, dim>(const dealii::Point<dim> &)>;
 
     // The degree of a cell's element, from 1 to the model's degree.
     using CellDegree =
@@ -126,6 +128,10 @@ namespace penny
     // The load vector int_face t v_z of the traction t on `face`.
     dealii::TrilinosWrappers::MPI::Vector load_vector(dealii::types::boundary_id face,
                                                       const Traction            &traction) const;
+    // The load vector int_face (sigma n).v of the traction of the stress sigma
+    // on `face` (n its outward normal).
+    dealii::TrilinosWrappers::MPI::Vector stress_load_vector(dealii::types::boundary_id face,
+                                                             const Stress              &stress) const;
 
     // u = A^-1 b. Throws if the solve misses the tolerance or produces NaN/Inf.
     DisplacementVector solve(const dealii::TrilinosWrappers::MPI::Vector &load);
@@ -154,6 +160,13 @@ namespace penny
     std::string solver_name() const { return penny::solver_name(linear_solver, get_communicator()); }
 
   private:
+    // A force per area f(x, n) on the faces of outward normal n (Pa).
+    using FaceForce =
+        std::function<dealii::Tensor<1, dim>(const dealii::Point<dim> &, const dealii::Tensor<1, dim> &)>;
+    // int_face f.v.
+    dealii::TrilinosWrappers::MPI::Vector face_load(dealii::types::boundary_id face,
+                                                    const FaceForce           &force) const;
+
     void distribute_and_constrain();
     // The zero displacements and hanging nodes of one DoFHandler on the mesh.
     void constrain(const dealii::DoFHandler<dim> &dofs, dealii::AffineConstraints<double> &constraints) const;

@@ -2,6 +2,8 @@
 // crack tip (c, 0) at a vertex and the boundary ids of fe/boundary_ids.h.
 #pragma once
 
+#include "fe/boundary_ids.h"
+
 #include <deal.II/base/point.h>
 #include <deal.II/base/types.h>
 #include <deal.II/grid/tria.h>
@@ -13,10 +15,10 @@ namespace penny
   // The half model of the penny gap.
   struct GeometryParameters
   {
-    double gap_radius;           // c (m)
-    double domain_radius;        // R (m)
-    double domain_height;        // H (m)
-    bool   clamped_far_boundary; // u = 0 on r = R and z = H, else traction free
+    double      gap_radius;    // c (m)
+    double      domain_radius; // R (m)
+    double      domain_height; // H (m)
+    FarBoundary far_boundary;  // on r = R and z = H
   };
 
   struct MeshParameters

@@ -25,7 +25,7 @@ namespace penny
       std::vector<ZeroDisplacement> conditions = {
           {boundary_id::symmetry, ComponentMask(std::vector<bool>{true, false})},
           {boundary_id::ligament, ComponentMask(std::vector<bool>{false, true})}};
-      if (geometry.clamped_far_boundary)
+      if (geometry.far_boundary == FarBoundary::clamped)
         conditions.push_back({boundary_id::far, ComponentMask()});
       return conditions;
     }
@@ -58,11 +58,22 @@ namespace penny
                degree_graded_towards_tip(parameters.geometry.gap_radius, parameters.degree,
                                          parameters.levels_per_degree))
   {
+    correct_far_field();
+  }
+
+  void PennyGapModel::correct_far_field()
+  {
+    if (parameters.geometry.far_boundary == FarBoundary::far_field)
+      far_field.emplace(system, boundary_id::far, parameters.material,
+                        [this](const DisplacementVector &u) { return gap_volume(u); });
   }
 
   DisplacementVector PennyGapModel::solve(const FaceLoad &load)
   {
-    return system.solve(boundary_id::gap_face, face_traction(load));
+    DisplacementVector u = system.solve(boundary_id::gap_face, face_traction(load));
+    if (far_field)
+      far_field->apply(u);
+    return u;
   }
 
   void PennyGapModel::refine_by_kelly(const DisplacementVector &u, const double fraction)
@@ -79,6 +90,7 @@ namespace penny
       triangulation.execute_coarsening_and_refinement();
     }
     system.setup();
+    correct_far_field();
   }
 
   double PennyGapModel::opening_at_centre(const DisplacementVector &u) const

@@ -9,11 +9,14 @@
 #pragma once
 
 #include "closed_forms/face_load.h"
+#include "fe/far_field_correction.h"
 #include "fe/linear_elastic_system.h"
 #include "fe/penny_gap_mesh.h"
 
 #include <deal.II/base/timer.h>
 #include <deal.II/distributed/shared_tria.h>
+
+#include <optional>
 
 namespace penny
 {
@@ -67,5 +70,9 @@ namespace penny
     dealii::TimerOutput                       &timer;
     dealii::parallel::shared::Triangulation<2> triangulation;
     LinearElasticSystem<Axisymmetric>          system;
+    // With a far-field far boundary: the response to it, per mesh.
+    std::optional<FarFieldCorrection<Axisymmetric>> far_field;
+
+    void correct_far_field();
   };
 } // namespace penny

@@ -30,7 +30,8 @@ namespace penny
     }
 
     // K_I of the circle of radius a under the pressure p from the
-    // axisymmetric model at its defaults, in a cylinder of radius R and height H.
+    // axisymmetric model at its defaults, in a cylinder of radius R and height H
+    // with the box's far boundary.
     double axisymmetric_stress_intensity_factor(const EllipticalModel &settings, const EllipticalGap &gap)
     {
       auto model                   = default_values<PennyGapModelParameters>(penny_gap_model_sections);
@@ -38,6 +39,7 @@ namespace penny
       model.geometry.gap_radius    = gap.semi_axis_a;
       model.geometry.domain_radius = settings.model.mesh.domain_width * gap.semi_axis_a;
       model.geometry.domain_height = settings.model.mesh.domain_height * gap.semi_axis_a;
+      model.geometry.far_boundary  = settings.model.far_boundary;
       const auto rings =
           default_values<std::vector<double>>([&](Sections &sections, std::vector<double> &radii) {
             ring_section(sections, radii, model.geometry);
@@ -62,10 +64,17 @@ namespace penny
     elastic_model_sections(sections, model.model, ModelDimension::three);
     sections.subsection("Elliptical model", [&](Entries &entries) {
       entries.number("Box width R/a", mesh.domain_width, 40, at_least(2.8),
-                     "The quarter model reaches x = R and y = R; free there. Units: a.");
+                     "The quarter model reaches x = R and y = R. Units: a.");
       entries.number("Box height H/a", mesh.domain_height, 40, at_least(2.8),
-                     "The model reaches z = H; free there (at 20 instead of 40 K_I of the circle moves by "
-                     "1e-4). Units: a.");
+                     "The model reaches z = H (with free far faces K_I of the circle moves by 1e-4 between "
+                     "20 and 40). Units: a.");
+      entries.choice("Far boundary", model.model.far_boundary, FarBoundary::free,
+                     EnumNames<FarBoundary>{{"free", FarBoundary::free},
+                                            {"clamped", FarBoundary::clamped},
+                                            {"far field", FarBoundary::far_field}},
+                     "Condition on the faces x = R, y = R and z = H: traction free, clamped (u = 0), or the "
+                     "traction of the gap's far field, a point source of the gap's own volume, which makes "
+                     "the box answer the infinite solid up to about (a/R)^5 (one more solve per mesh).");
       entries.integer(
           "Cells along front", mesh.cells_along_front, 16u, 2u, 256u,
           "Edges of the quarter front 0 <= phi <= pi/2, evenly spaced in the parametric angle phi; even. "

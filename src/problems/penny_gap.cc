@@ -34,7 +34,8 @@ namespace penny
                        "Radius of the penny-shaped gap (crack). Units: m.");
         entries.number(
             "Domain radius R", geometry.domain_radius, 1000, {"(c, 1e12 c]", [](double) { return true; }},
-            "Radius of the truncated cylinder. Its effect on K_I shrinks roughly like (c/R)^3. Units: m.");
+            "Radius of the truncated cylinder. Its effect on K_I shrinks roughly like (c/R)^3 with a free "
+            "far boundary, (c/R)^5 under the far field. Units: m.");
         entries.number("Domain height H", geometry.domain_height, 1000,
                        {"(0, 1e12 c]", [](double) { return true; }},
                        "Height of the half model z >= 0. Units: m.");
@@ -49,9 +50,14 @@ namespace penny
             entries.require(geometry.domain_height > 0 && geometry.domain_height <= largest_aspect * c,
                             "Domain height H", geometry.domain_height, "(0, 1e12 c]" + with);
           }
-        entries.choice("Far boundary", geometry.clamped_far_boundary, false,
-                       EnumNames<bool>{{"free", false}, {"clamped", true}},
-                       "Condition on r = R and z = H: traction free, or clamped (u = 0).");
+        entries.choice("Far boundary", geometry.far_boundary, FarBoundary::free,
+                       EnumNames<FarBoundary>{{"free", FarBoundary::free},
+                                              {"clamped", FarBoundary::clamped},
+                                              {"far field", FarBoundary::far_field}},
+                       "Condition on r = R and z = H: traction free, clamped (u = 0), or the traction of "
+                       "the gap's far field, a point source of the gap's own volume, which makes the "
+                       "truncated solid answer the infinite one up to about (c/R)^5 (one more solve "
+                       "per mesh).");
       });
     }
 
