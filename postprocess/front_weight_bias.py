@@ -6,17 +6,17 @@ energy release rate G(phi) ~ K_I(phi)^2 with the weight k((phi - phi_i)/h)
 root of that average as K_I(phi_i). Where K_I varies fast along the front (near
 phi = 0 of a slender ellipse) the average differs from the point value even
 for the exact field. This prints that relative difference for the exact
-Green-Sneddon/Irwin K_I, for the weight in use, k(t) = (1 - t^2)^4 (1 - 13
-t^2/3) (second moment zero), and for (1 - t^2)^4 (1 - 10 t^2 + 17 t^4)
-(second and fourth moments zero), at the scene's 17 front points, for the
-half-widths h = 2 and 1 front cells of 16 (h = 2 pi/32 and pi/32).
+Green-Sneddon/Irwin K_I, for the weight in use, k(t) = (1 - t^2)^4 (1 - 10
+t^2 + 17 t^4) (second and fourth moments zero), and for the earlier (1 -
+t^2)^4 (1 - 13 t^2/3) (second moment zero), at the scene's 17 front points,
+for the half-widths h = 2 and 1 front cells of 16 (h = 2 pi/32 and pi/32).
 
 Usage: /usr/bin/python3 postprocess/front_weight_bias.py"""
 import numpy as np
 
 WEIGHTS = {
-    "(1-t^2)^4 (1-13t^2/3)": lambda t: (1 - t**2) ** 4 * (1 - 13 * t**2 / 3),
     "(1-t^2)^4 (1-10t^2+17t^4)": lambda t: (1 - t**2) ** 4 * (1 - 10 * t**2 + 17 * t**4),
+    "(1-t^2)^4 (1-13t^2/3)": lambda t: (1 - t**2) ** 4 * (1 - 13 * t**2 / 3),
 }
 
 

@@ -1,5 +1,5 @@
 // The 3D elliptical-gap model at test size, on 1 or 2 MPI ranks: the front
-// weight of the localised domain integral (no first or second moment, the
+// weight of the localised domain integral (its first four moments zero, the
 // folding at the symmetry planes, its gradient, where its ring edge crosses
 // a cell), one gap under uniform pressure of either sign against
 // Green-Sneddon/Irwin, with its fields; Galin's closed form for quadratic
@@ -71,17 +71,17 @@ namespace
   }
 } // namespace
 
-BOOST_AUTO_TEST_CASE(front_weight_without_first_and_second_moments)
+BOOST_AUTO_TEST_CASE(front_weight_without_its_first_four_moments)
 {
   const double                centre = 0.7, h = 0.3;
   const FrontSegmentExtension q(nearest, centre, h, 0.1);
-  for (const unsigned int power : {0, 1, 2})
+  for (const unsigned int power : {0, 1, 2, 3, 4})
     {
       const double moment =
           simpson([&](const double phi) { return q.front_weight(phi) * std::pow(phi - centre, power); },
                   centre - h, centre + h);
       if (power == 0)
-        BOOST_TEST(moment == h * 1024. / 2079, tt::tolerance(1e-10)); // int k = 1024/2079 on (-1, 1)
+        BOOST_TEST(moment == h * 16384. / 45045, tt::tolerance(1e-10)); // int k = 16384/45045 on (-1, 1)
       else
         BOOST_TEST(std::abs(moment) < 1e-12);
     }
@@ -166,7 +166,7 @@ BOOST_AUTO_TEST_CASE(uniform_pressure_of_either_sign)
           }
       BOOST_TEST(solved.largest_error < 6e-2);
       // Linear in p: the test-size values of 1 MPa, recorded from one serial run.
-      const std::vector<double> recorded = {708852.81726149702, 873289.72297736572, 977181.62214102002};
+      const std::vector<double> recorded = {708993.7886530254, 873281.41160280351, 977184.44228140358};
       for (unsigned int i = 0; i < recorded.size(); ++i)
         BOOST_TEST(solved.signed_sifs.back()[i] == recorded[i] * pressure / 1e6, tt::tolerance(1e-8));
       BOOST_TEST(solved.opening_at_centre == solved.exact_opening_at_centre, tt::tolerance(6e-2));

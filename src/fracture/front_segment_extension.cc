@@ -12,14 +12,16 @@ namespace penny
 
   namespace
   {
-    // k(t) = (1 - t^2)^4 (1 - 13 t^2/3) on |t| < 1 and its derivative:
-    // int t^2 k dt = 0, since int t^2 (1 - t^2)^4 / int t^4 (1 - t^2)^4 = 13/3.
+    // k(t) = (1 - t^2)^4 (1 - 10 t^2 + 17 t^4) on |t| < 1 and its derivative:
+    // int t^2 k dt = int t^4 k dt = 0: the moments int t^2j (1 - t^2)^4 dt are
+    // in the ratios 1, 1/11, 3/143, 1/143, 7/2431 for j = 0 ... 4, and
+    // 1/11 - 10 (3/143) + 17/143 = 0, 3/143 - 10/143 + 17 (7/2431) = 0.
     std::pair<double, double> moment_free_bump(const double t)
     {
       if (std::abs(t) >= 1)
         return {0., 0.};
-      const double s = 1 - t * t, s3 = s * s * s, c = 13. / 3;
-      return {s3 * s * (1 - c * t * t), -8 * t * s3 * (1 - c * t * t) - 2 * c * t * s3 * s};
+      const double t2 = t * t, s = 1 - t2, s3 = s * s * s, p = 1 - 10 * t2 + 17 * t2 * t2;
+      return {s3 * s * p, -8 * t * s3 * p + s3 * s * (-20 * t + 68 * t * t2)};
     }
   } // namespace
 

@@ -8,12 +8,15 @@
 // advance), w = (1 - (d/rho)^2)^4 the ring profile of the penny model across
 // the front, and f a weight along the front centred on phi_i:
 //
-//   f(phi) = k((phi - phi_i)/h),   k(t) = (1 - t^2)^4 (1 - 13 t^2/3)  (|t| < 1),
+//   f(phi) = k((phi - phi_i)/h),   k(t) = (1 - t^2)^4 (1 - 10 t^2 + 17 t^4)  (|t| < 1),
 //
-// whose first and second moments vanish. The domain integral then gives the
+// whose first four moments vanish. The domain integral then gives the
 // average of G(phi) with the weight k(phi - phi_i) |dx/dphi| over the front,
-// and that average is G(phi_i) + O(h^4): the O(h^2) bias of a positive bump
-// (several 1e-3 in G for the slicing of the meshes here) is gone. The quarter
+// and that average is G(phi_i) + O(h^6): the O(h^2) bias of a positive bump
+// (several 1e-3 in G for the slicing of the meshes here) is gone, and the
+// O(h^4) one of a weight with only the second moment zero (2.4e-4 in K_I at
+// phi = 0 of b/a = 0.25 with h = pi/16; postprocess/front_weight_bias.py)
+// falls to 1.5e-5. The quarter
 // model holds the front 0 <= phi <= pi/2; a weight that reaches past a
 // symmetry plane is folded back (its mirror images about phi = 0 and pi/2
 // are added), which is the weight of the whole front restricted to the
