@@ -46,7 +46,7 @@ namespace penny
     const DisplacementVector u = system.solve(system.stress_load_vector(
         far, [&](const auto &x) { return in_components(unit_gap.stress(in_space(x)), Kinematics()); }));
     unit_volume                = this->gap_volume(u);
-    // The far field of the gap it opens is smaller by about (c/R)^3.
+    // V(u_1) is of order -(c/R)^3; near 1 the superposition's D would blow up.
     if (!(std::abs(unit_volume) < 0.5))
       throw std::runtime_error("far field: the gap's volume under the far field of a unit volume is " +
                                std::to_string(unit_volume) +
