@@ -169,7 +169,7 @@ BOOST_AUTO_TEST_CASE(bad_expression_is_an_input_error)
 }
 
 // The far field of a gap (closed_forms/gap_far_field.h): a displacement whose
-// stress is the one returned (central differences), in equilibrium, with the
+// gradient is the one returned (central differences), its stress in equilibrium, with the
 // symmetry of an opening about z = 0 (u_z and the shear tractions vanish
 // there), and the tail of Sneddon's penny crack on its axis,
 //   u_z(0, z) = 2 (1 + nu) p/(pi E) {2 (1 - nu) [c - z atan(c/z)] + z [atan(c/z) - c z/(c^2 + z^2)]},
@@ -177,9 +177,13 @@ BOOST_AUTO_TEST_CASE(bad_expression_is_an_input_error)
 BOOST_AUTO_TEST_CASE(gap_far_field)
 {
   const double      E = 7e10, nu = 0.3, volume = 2e-3;
-  const GapFarField far(volume, E, nu);
+  const GapFarField far(volume, nu);
   const double      lambda = E * nu / ((1 + nu) * (1 - 2 * nu)), mu = E / (2 * (1 + nu));
-  const double      h = 1e-4;
+  const auto        stress = [&](const dealii::Point<3> &x) {
+    const auto strain = dealii::symmetrize(far.displacement_gradient(x));
+    return lambda * dealii::trace(strain) * dealii::unit_symmetric_tensor<3>() + 2 * mu * strain;
+  };
+  const double h = 1e-4;
   for (const dealii::Point<3> &x : {dealii::Point<3>(1.3, -0.4, 0.9), dealii::Point<3>(-0.2, 2.1, -1.7)})
     {
       dealii::Tensor<2, 3> gradient;
@@ -191,30 +195,26 @@ BOOST_AUTO_TEST_CASE(gap_far_field)
           for (unsigned int i = 0; i < 3; ++i)
             gradient[i][j] = derivative[i];
         }
-      const auto strain = dealii::symmetrize(gradient);
-      const auto stress =
-          lambda * dealii::trace(strain) * dealii::unit_symmetric_tensor<3>() + 2 * mu * strain;
-      const auto exact = far.stress(x);
-      BOOST_TEST((stress - exact).norm() <= 1e-7 * exact.norm());
+      const auto exact = far.displacement_gradient(x);
+      BOOST_TEST((gradient - exact).norm() <= 1e-7 * exact.norm());
 
       dealii::Tensor<1, 3> divergence;
       for (unsigned int j = 0; j < 3; ++j)
         {
           dealii::Tensor<1, 3> dx;
           dx[j] = h;
-          divergence +=
-              (far.stress(x + dx) - far.stress(x - dx)) / (2 * h) * dealii::Point<3>::unit_vector(j);
+          divergence += (stress(x + dx) - stress(x - dx)) / (2 * h) * dealii::Point<3>::unit_vector(j);
         }
-      BOOST_TEST(divergence.norm() <= 1e-7 * exact.norm() / x.norm());
+      BOOST_TEST(divergence.norm() <= 1e-7 * stress(x).norm() / x.norm());
     }
 
   const dealii::Point<3> on_plane(0.8, -1.1, 0);
   BOOST_TEST(std::abs(far.displacement(on_plane)[2]) <= 1e-15 * far.displacement(on_plane).norm());
-  BOOST_TEST(std::abs(far.stress(on_plane)[0][2]) + std::abs(far.stress(on_plane)[1][2]) <=
-             1e-15 * far.stress(on_plane).norm());
+  BOOST_TEST(std::abs(stress(on_plane)[0][2]) + std::abs(stress(on_plane)[1][2]) <=
+             1e-15 * stress(on_plane).norm());
 
   const double      p = 1e6, gap_radius = 0.01;
-  const GapFarField penny(16 * (1 - nu * nu) * p * std::pow(gap_radius, 3) / (3 * E), E, nu);
+  const GapFarField penny(16 * (1 - nu * nu) * p * std::pow(gap_radius, 3) / (3 * E), nu);
   for (const double z : {10 * gap_radius, 100 * gap_radius})
     {
       const double t     = std::atan(gap_radius / z);

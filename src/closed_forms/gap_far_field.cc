@@ -6,9 +6,8 @@ namespace penny
 {
   using namespace dealii;
 
-  GapFarField::GapFarField(const double volume, const double youngs_modulus, const double poissons_ratio)
-      : nu(poissons_ratio), lambda(youngs_modulus * nu / ((1 + nu) * (1 - 2 * nu))),
-        mu(youngs_modulus / (2 * (1 + nu))), amplitude(volume / (8 * M_PI * (1 - nu)))
+  GapFarField::GapFarField(const double volume, const double poissons_ratio)
+      : nu(poissons_ratio), amplitude(volume / (8 * M_PI * (1 - nu)))
   {
   }
 
@@ -36,11 +35,5 @@ namespace penny
               3 * ((i == j ? z * z : 0.) + (j == 2 ? 2 * x[i] * z : 0.) - 5 * x[i] * x[j] * z * z / r2) / r5;
         }
     return amplitude * g;
-  }
-
-  SymmetricTensor<2, 3> GapFarField::stress(const Point<3> &x) const
-  {
-    const SymmetricTensor<2, 3> strain = symmetrize(displacement_gradient(x));
-    return lambda * trace(strain) * unit_symmetric_tensor<3>() + 2 * mu * strain;
   }
 } // namespace penny

@@ -11,7 +11,6 @@
 #pragma once
 
 #include <deal.II/base/point.h>
-#include <deal.II/base/symmetric_tensor.h>
 #include <deal.II/base/tensor.h>
 
 namespace penny
@@ -19,19 +18,15 @@ namespace penny
   class GapFarField
   {
   public:
-    // The field of the volume D (m^3) in the solid of modulus E (Pa) and ratio nu.
-    GapFarField(double volume, double youngs_modulus, double poissons_ratio);
+    // The field of the volume D (m^3) in the solid of Poisson's ratio nu.
+    GapFarField(double volume, double poissons_ratio);
 
-    // u(x) (m) and sigma(x) (Pa) at x != 0.
-    dealii::Tensor<1, 3>          displacement(const dealii::Point<3> &x) const;
-    dealii::SymmetricTensor<2, 3> stress(const dealii::Point<3> &x) const;
-
-  private:
-    // du_i/dx_j.
+    // u(x) (m) and its gradient du_i/dx_j at x != 0.
+    dealii::Tensor<1, 3> displacement(const dealii::Point<3> &x) const;
     dealii::Tensor<2, 3> displacement_gradient(const dealii::Point<3> &x) const;
 
+  private:
     const double nu;
-    const double lambda, mu;
     const double amplitude; // D/(8 pi (1 - nu))
   };
 } // namespace penny

@@ -49,7 +49,7 @@ namespace penny
         crack_front(parameters.mesh.semi_axis_a, parameters.mesh.semi_axis_b)
   {
     if (parameters.far_boundary == FarBoundary::far_field)
-      far_field.emplace(system, boundary_id::far, parameters.material,
+      far_field.emplace(system, boundary_id::far, parameters.material.poissons_ratio,
                         [this](const DisplacementVector &u) { return gap_volume(u); });
   }
 

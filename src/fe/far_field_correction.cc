@@ -39,12 +39,15 @@ namespace penny
   template <typename Kinematics>
   FarFieldCorrection<Kinematics>::FarFieldCorrection(LinearElasticSystem<Kinematics> &system,
                                                      const types::boundary_id         far,
-                                                     const MaterialParameters &material, GapVolume gap_volume)
+                                                     const double poissons_ratio, GapVolume gap_volume)
       : gap_volume(std::move(gap_volume))
   {
-    const GapFarField        unit_gap(1, material.youngs_modulus, material.poissons_ratio);
+    const GapFarField unit_gap(1, poissons_ratio);
+    const auto        stress = [&](const auto &x) {
+      return system.get_elasticity().stress(strain(unit_gap.displacement_gradient(in_space(x))));
+    };
     const DisplacementVector u = system.solve(system.stress_load_vector(
-        far, [&](const auto &x) { return in_components(unit_gap.stress(in_space(x)), Kinematics()); }));
+        far, [&](const auto &x) { return in_components(stress(x), Kinematics()); }));
     unit_volume                = this->gap_volume(u);
     // V(u_1) is of order -(c/R)^3; near 1 the superposition's D would blow up.
     if (!(std::abs(unit_volume) < 0.5))

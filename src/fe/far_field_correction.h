@@ -25,7 +25,7 @@ namespace penny
 
     // Solves for u_1 with the far field's traction on the boundary `far`.
     FarFieldCorrection(LinearElasticSystem<Kinematics> &system, dealii::types::boundary_id far,
-                       const MaterialParameters &material, GapVolume gap_volume);
+                       double poissons_ratio, GapVolume gap_volume);
 
     // u_p -> u_p + D u_1.
     void apply(DisplacementVector &u) const;

@@ -64,7 +64,7 @@ namespace penny
   void PennyGapModel::correct_far_field()
   {
     if (parameters.geometry.far_boundary == FarBoundary::far_field)
-      far_field.emplace(system, boundary_id::far, parameters.material,
+      far_field.emplace(system, boundary_id::far, parameters.material.poissons_ratio,
                         [this](const DisplacementVector &u) { return gap_volume(u); });
   }
 
