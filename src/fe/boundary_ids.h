@@ -21,6 +21,6 @@ namespace penny
   {
     free,     // traction free
     clamped,  // u = 0
-    far_field // the traction of the gap's far field (fe/far_field_correction.h)
+    far_field // the traction of the gap's far field (fe/far_field_load.h)
   };
 } // namespace penny

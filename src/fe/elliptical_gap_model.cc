@@ -55,10 +55,14 @@ namespace penny
 
   DisplacementVector EllipticalGapModel::solve(const Traction &traction)
   {
-    DisplacementVector u = system.solve(boundary_id::gap_face, traction);
     if (far_field)
-      far_field->apply(u);
-    return u;
+      return far_field->solve(system.load_vector(boundary_id::gap_face, traction));
+    return system.solve(boundary_id::gap_face, traction);
+  }
+
+  const SolveReport &EllipticalGapModel::last_solve() const
+  {
+    return far_field ? far_field->last_solve() : system.last_solve();
   }
 
   std::vector<double> EllipticalGapModel::front_vertex_angles() const

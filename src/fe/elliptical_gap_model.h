@@ -3,7 +3,7 @@
 // z = 0 (doc/theory.md, section 8). u_x = 0 on the symmetry plane x = 0,
 // u_y = 0 on y = 0, u_z = 0 on the ligament, the face traction t(x, y) on
 // the gap face, the far faces free, clamped or under the traction of the
-// gap's far field (fe/far_field_correction.h). The mesh (fe/elliptical_gap_mesh.h) has
+// gap's far field (fe/far_field_load.h). The mesh (fe/elliptical_gap_mesh.h) has
 // the front as a line of mesh edges on a manifold and is graded towards it in
 // the coarse mesh, so that a p4est parallel::distributed::Triangulation<3>
 // holds it and refines it globally; cells, degrees of freedom and the
@@ -13,7 +13,7 @@
 #pragma once
 
 #include "fe/elliptical_gap_mesh.h"
-#include "fe/far_field_correction.h"
+#include "fe/far_field_load.h"
 #include "fe/linear_elastic_system.h"
 
 #include <deal.II/base/timer.h>
@@ -43,6 +43,9 @@ namespace penny
 
     // The displacement under the normal traction t(x) on the gap face.
     DisplacementVector solve(const Traction &traction);
+    // The last solve's iterations (all of them with the far field), residual
+    // and condition estimate.
+    const SolveReport &last_solve() const;
 
     // Parametric angles of the front vertices, 0 to pi/2.
     std::vector<double> front_vertex_angles() const;
@@ -62,6 +65,6 @@ namespace penny
     dealii::parallel::distributed::Triangulation<3> triangulation;
     LinearElasticSystem<Solid>                      system;
     const EllipticalFront                           crack_front;
-    std::optional<FarFieldCorrection<Solid>>        far_field;
+    std::optional<FarFieldLoad<Solid>>              far_field;
   };
 } // namespace penny

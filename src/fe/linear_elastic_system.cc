@@ -300,13 +300,13 @@ namespace penny
 
   template <typename Kinematics>
   void LinearElasticSystem<Kinematics>::apply_inverse(TrilinosWrappers::MPI::Vector       &x,
-                                                      const TrilinosWrappers::MPI::Vector &b)
+                                                      const TrilinosWrappers::MPI::Vector &b,
+                                                      const double                         tolerance)
   {
     if (linear_solver.type != LinearSolverParameters::Type::direct)
       {
         // CG aims at half the tolerance: the residual recomputed in solve() differs by rounding.
-        SolverControl control(linear_solver.max_iterations, 0.5 * linear_solver.tolerance * b.l2_norm(),
-                              false, false);
+        SolverControl control(linear_solver.max_iterations, 0.5 * tolerance * b.l2_norm(), false, false);
         const auto    condition = [this](const double kappa) { report.condition_estimate = kappa; };
         try
           {
@@ -415,8 +415,21 @@ namespace penny
   template <typename Kinematics>
   DisplacementVector LinearElasticSystem<Kinematics>::solve(const TrilinosWrappers::MPI::Vector &rhs)
   {
+    return solve(rhs, linear_solver.tolerance, {});
+  }
+
+  template <typename Kinematics>
+  DisplacementVector LinearElasticSystem<Kinematics>::solve(const TrilinosWrappers::MPI::Vector &rhs,
+                                                            const double                         tolerance,
+                                                            const DisplacementVector            &start)
+  {
     TimerOutput::Scope            scope(timer, "solve");
     TrilinosWrappers::MPI::Vector u(owned, get_communicator());
+    if (start.size() != 0)
+      {
+        u = start;
+        constraints.set_zero(u);
+      }
     report.iterations         = 0;
     report.condition_estimate = 0;
     const double load_norm    = rhs.l2_norm();
@@ -425,7 +438,7 @@ namespace penny
                                "point of the loaded faces");
     try
       {
-        apply_inverse(u, rhs);
+        apply_inverse(u, rhs, tolerance);
       }
     catch (const ExceptionBase &exception)
       {
@@ -446,12 +459,11 @@ namespace penny
       return residual.l2_norm() / load_norm;
     };
     report.relative_residual = relative_residual();
-    for (unsigned int step = 0;
-         step < 3 && report.relative_residual > 1e-3 * linear_solver.tolerance && mumps; ++step)
+    for (unsigned int step = 0; step < 3 && report.relative_residual > 1e-3 * tolerance && mumps; ++step)
       {
         try
           {
-            apply_inverse(correction, residual);
+            apply_inverse(correction, residual, tolerance);
           }
         catch (const ExceptionBase &exception)
           {
@@ -473,11 +485,11 @@ namespace penny
       }
     if (!std::isfinite(report.relative_residual) || !std::isfinite(u.l2_norm()))
       throw std::runtime_error("solve: the displacement holds NaN or Inf");
-    if (report.relative_residual > linear_solver.tolerance)
+    if (report.relative_residual > tolerance)
       {
         std::ostringstream message;
         message << "solve: relative residual " << report.relative_residual << " exceeds the tolerance "
-                << linear_solver.tolerance;
+                << tolerance;
         throw LinearSolverFailure(message.str());
       }
     constraints.distribute(u);

@@ -136,10 +136,17 @@ namespace penny
     // u = A^-1 b. Throws if the solve misses the tolerance or produces NaN/Inf.
     DisplacementVector solve(const dealii::TrilinosWrappers::MPI::Vector &load);
 
+    // The same to the relative residual `tolerance`; the iterative solvers
+    // start from `start` (from zero if it is empty).
+    DisplacementVector solve(const dealii::TrilinosWrappers::MPI::Vector &load, double tolerance,
+                             const DisplacementVector &start);
+
     // Both together: the displacement under the traction t on `face`.
     DisplacementVector solve(dealii::types::boundary_id face, const Traction &traction);
 
-    const SolveReport             &last_solve() const { return report; }
+    const SolveReport &last_solve() const { return report; }
+    // The relative residual every solve reaches unless told otherwise.
+    double                         tolerance() const { return linear_solver.tolerance; }
     const dealii::DoFHandler<dim> &get_dof_handler() const { return dof_handler; }
     // The elements, indexed by the cells' active FE index.
     const dealii::hp::FECollection<dim>      &get_fe() const { return fe; }
@@ -177,9 +184,10 @@ namespace penny
     void assemble_matrix();
     void factorise();
     void build_solver();
-    // x = A^-1 b with the factorisation or the preconditioned CG.
+    // x = A^-1 b with the factorisation, or the preconditioned CG from x to
+    // the relative residual `tolerance`.
     void apply_inverse(dealii::TrilinosWrappers::MPI::Vector       &x,
-                       const dealii::TrilinosWrappers::MPI::Vector &b);
+                       const dealii::TrilinosWrappers::MPI::Vector &b, double tolerance);
 
     const CellDegree                         cell_degree;
     const dealii::hp::FECollection<dim>      fe;

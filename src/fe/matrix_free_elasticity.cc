@@ -269,6 +269,7 @@ namespace penny
     fine.initialize_dof_vector(u);
     fine.initialize_dof_vector(load);
     copy(load, b);
+    copy(u, x);
     SolverCG<Vector> cg(control);
     cg.connect_condition_number_slot(condition);
     cg.solve(fine, u, load, *hierarchy->preconditioner);

@@ -42,7 +42,7 @@ namespace penny
     void vmult(dealii::TrilinosWrappers::MPI::Vector       &dst,
                const dealii::TrilinosWrappers::MPI::Vector &src) const;
 
-    // x = A^-1 b by CG to `control`'s tolerance; the estimate of the
+    // x = A^-1 b by CG from x to `control`'s tolerance; the estimate of the
     // preconditioned matrix's condition number goes to `condition`. Throws
     // SolverControl::NoConvergence.
     void solve(dealii::TrilinosWrappers::MPI::Vector &x, const dealii::TrilinosWrappers::MPI::Vector &b,

@@ -58,10 +58,10 @@ namespace penny
                degree_graded_towards_tip(parameters.geometry.gap_radius, parameters.degree,
                                          parameters.levels_per_degree))
   {
-    correct_far_field();
+    load_far_field();
   }
 
-  void PennyGapModel::correct_far_field()
+  void PennyGapModel::load_far_field()
   {
     if (parameters.geometry.far_boundary == FarBoundary::far_field)
       far_field.emplace(system, boundary_id::far, parameters.material.poissons_ratio,
@@ -70,10 +70,14 @@ namespace penny
 
   DisplacementVector PennyGapModel::solve(const FaceLoad &load)
   {
-    DisplacementVector u = system.solve(boundary_id::gap_face, face_traction(load));
     if (far_field)
-      far_field->apply(u);
-    return u;
+      return far_field->solve(system.load_vector(boundary_id::gap_face, face_traction(load)));
+    return system.solve(boundary_id::gap_face, face_traction(load));
+  }
+
+  const SolveReport &PennyGapModel::last_solve() const
+  {
+    return far_field ? far_field->last_solve() : system.last_solve();
   }
 
   void PennyGapModel::refine_by_kelly(const DisplacementVector &u, const double fraction)
@@ -90,7 +94,7 @@ namespace penny
       triangulation.execute_coarsening_and_refinement();
     }
     system.setup();
-    correct_far_field();
+    load_far_field();
   }
 
   double PennyGapModel::opening_at_centre(const DisplacementVector &u) const

@@ -9,7 +9,7 @@
 #pragma once
 
 #include "closed_forms/face_load.h"
-#include "fe/far_field_correction.h"
+#include "fe/far_field_load.h"
 #include "fe/linear_elastic_system.h"
 #include "fe/penny_gap_mesh.h"
 
@@ -47,6 +47,9 @@ namespace penny
     // The displacement under the face traction `load`. Throws if the solve
     // misses the tolerance or produces NaN/Inf.
     DisplacementVector solve(const FaceLoad &load);
+    // The last solve's iterations (all of them with the far field), residual
+    // and condition estimate.
+    const SolveReport &last_solve() const;
 
     // Refines the `fraction` of cells with the largest Kelly indicators of u
     // (the same cells on every rank), then rebuilds and factorises the system.
@@ -70,9 +73,9 @@ namespace penny
     dealii::TimerOutput                       &timer;
     dealii::parallel::shared::Triangulation<2> triangulation;
     LinearElasticSystem<Axisymmetric>          system;
-    // With a far-field far boundary: the response to it, per mesh.
-    std::optional<FarFieldCorrection<Axisymmetric>> far_field;
+    // With a far-field far boundary: its load, per mesh.
+    std::optional<FarFieldLoad<Axisymmetric>> far_field;
 
-    void correct_far_field();
+    void load_far_field();
   };
 } // namespace penny
