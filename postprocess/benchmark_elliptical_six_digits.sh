@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# The 3D elliptical gap to six digits (issue 26's acceptance): the settings of
+# prms/elliptical-gap-six-digits.prm (far field on the box, innermost ring
+# 1e-5 b, degree 4, matrix-free CG + p-multigrid to 1e-10) at b/a = 1, 0.5,
+# 0.25 and 0.1, on 2 MPI ranks without fields, the front weight's half-width
+# 1 below b/a = 0.5 (its bias at phi = 0 grows steeply as b/a falls,
+# postprocess/front_weight_bias.py); then the table of the largest K_I error
+# on each ring, w(0), the gap volume, DoFs, CG iterations, wall time and peak
+# memory (postprocess/report_elliptical_convergence.py). About 35 minutes on
+# the idle 2-core machine; run it on an idle machine.
+# Usage, from anywhere: postprocess/benchmark_elliptical_six_digits.sh [BUILD [OUT]]
+# (defaults: build, output/benchmark-elliptical-six-digits, both from the repository root)
+set -euo pipefail
+root="$(cd "$(dirname "$0")/.." && pwd)"
+build="$(realpath "${1:-$root/build}")"
+out="$(realpath -m "${2:-$root/output/benchmark-elliptical-six-digits}")"
+[ -x "$build/penny" ] || { echo "benchmark_elliptical_six_digits.sh: no penny in '$build'" >&2; exit 2; }
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+mkdir -p "$out"
+failed=""
+# Sets the entry of the shipped scene whose line starts with NAME (after
+# "set ") to VALUE in the run's copy, or stops if there is no such line.
+set_entry() {
+  grep -q "^ *set $1" "$out/$name.prm" || { echo "benchmark_elliptical_six_digits.sh: no entry '$1'" >&2; exit 2; }
+  sed -i "\|^ *set $1|s|^\( *set ${1%% =*} *=\).*|\1 $2|" "$out/$name.prm"
+}
+# b/a:front weight half-width
+for case in 1:2 0.5:2 0.25:1 0.1:1; do
+  IFS=: read -r aspect half_width <<< "$case"
+  name="b$aspect"
+  cp "$root/prms/elliptical-gap-six-digits.prm" "$out/$name.prm"
+  set_entry "Aspect ratio b/a" "$aspect"
+  set_entry "Front weight half-width" "$half_width"
+  set_entry "Tolerance = 2e-6" 1 # the verification's, not the solver's
+  set_entry "Directory" "$out/$name"
+  echo "== $name ($(date +%T))"
+  rm -rf "${out:?}/$name"
+  mpirun -np 2 "$build/penny" "$out/$name.prm" < /dev/null > "$out/$name.log" 2>&1 || {
+    failed="$failed $name"
+    echo "benchmark_elliptical_six_digits.sh: $name failed: $(grep -m1 'error' "$out/$name.log")" >&2
+  }
+done
+echo "load average at the end: $(cut -d' ' -f1-3 /proc/loadavg) ($(nproc) cores)"
+/usr/bin/python3 "$root/postprocess/report_elliptical_convergence.py" "$out"
+# A case that failed has no row: say so, and fail.
+[ -z "$failed" ] || { echo "benchmark_elliptical_six_digits.sh: no result for$failed" >&2; exit 1; }
