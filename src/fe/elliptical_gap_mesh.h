@@ -4,36 +4,43 @@
 // triangulation.
 //
 // Construction. The mesh is built in a reference space (X, Y, Z) in which the
-// front is the unit circle X^2 + Y^2 = 1, Z = 0, and mapped to the physical
-// space by x = a X, y = b Y, z = c Z with c = sqrt(a b). In the reference
-// space it is a cube-sphere octant: a core cube [0, c0]^3 of m x m x m' cells,
-// spherical shells around it (each shell one cell thick, its surface split
-// into the three patches of the cube-sphere: X and Y next to the equator, Z
-// around the pole) and, beyond the shell r = 1.4, shells blended from spheres
-// to the box: cells grow like the distance from the crack in every direction,
-// so the far field costs few cells and none is a needle (an extruded mesh
-// would carry the fine front slicing up to z = H). The shells' thickness
-// follows the angular cell width, but stops shrinking past 16 cells along the
-// front, so that a finer front costs cells like m^2. The
-// equator of every shell has 2m = `cells_along_front` edges at parametric
-// angles phi_e = e pi/(4m). In the meridian half-plane (r, theta) of the
-// spherical coordinates the front is the point (1, 0); the block
-// 0.6 <= r <= 1.4, 0 <= theta <= 0.4 of the X and Y patches is replaced by a
-// conforming spider web around that point: `cells_around_front` sectors (kite
-// cells at the front, each spanning two sectors), rings growing geometrically
-// from `front_cell_size` to the block, and swept along the front. So the
-// front is a line of mesh edges and the grading towards it lies in the coarse
-// mesh itself (p4est allows only about 18 refinement levels in 3D); the coarse
-// mesh is conforming. The swept cells (the X and Y patches from the innermost
-// sphere to r = 1.4, spider web included) carry a ChartManifold, the
-// stretched spherical coordinates
-//   x = a r cos(theta) cos(phi), y = b r cos(theta) sin(phi), z = c r sin(theta),
-// so refinement places new front points at r = 1, theta = 0: exactly on the
-// ellipse. All other cells are flat; their interior points are interpolated
-// from their curved faces by deal.II, so refined cells stay well shaped.
-// In the physical meridian plane the innermost ring has radius b
-// `front_cell_size` across the front at phi = pi/2 (a `front_cell_size` at
-// phi = 0) and c `front_cell_size` in z.
+// front is the unit circle X^2 + Y^2 = 1, Z = 0: a cube-sphere octant, a core
+// cube [0, c0]^3 of m x m x m' cells, spherical shells around it (each shell
+// one cell thick, its surface split into the three patches of the
+// cube-sphere: X and Y next to the equator, Z around the pole) and, beyond
+// the shell r = 1.4, shells whose nodes run on straight lines (in physical
+// space) from that shell's nodes to the box's, spaced geometrically: cells
+// grow like the distance from the crack in every direction, so the far field
+// costs few cells and none is a needle. The shells' thickness follows the
+// angular cell width, but stops shrinking past 16 cells along the front, so
+// that a finer front costs cells like m^2. The equator of every shell has
+// 2m = `cells_along_front` edges at parametric angles phi_e = e pi/(4m). In
+// the meridian half-plane (r, theta) of the spherical coordinates the front is
+// the point (1, 0); the block 0.6 <= r <= 1.4, 0 <= theta <= 0.4 of the X and
+// Y patches is replaced by a conforming spider web around that point:
+// `cells_around_front` sectors (kite cells at the front, each spanning two
+// sectors), rings growing geometrically from the innermost to the block,
+// swept along the front. So the front is a line of mesh edges and the
+// grading towards it lies in the coarse mesh itself (p4est allows only about
+// 18 refinement levels in 3D); the coarse mesh is conforming.
+//
+// Mapping. The swept cells (the X and Y patches from the innermost sphere to
+// r = 1.4, spider web included) carry a ChartManifold, the stretched
+// spherical coordinates (r, theta, phi):
+//   x = a r cos(theta) cos(phi), y = b r cos(theta) sin(phi), z = h(phi) r sin(theta),
+// h(phi) = a b/|(b cos phi, a sin phi)| the distance across the front in its
+// normal plane per unit of r, so that the web's circles are circles in the
+// front's normal plane at every phi (cells across the front are as tall as
+// wide). Refinement places new front points at r = 1, theta = 0, exactly on
+// the ellipse. Towards the z-axis (across the pole patch and the core) the
+// height scale blends into sqrt(a b); those cells, and the outer shells', are flat, their interior
+// points interpolated from their faces by deal.II, so refined cells stay well
+// shaped.
+//
+// Rings. The innermost ring has the physical radius `front_cell_size` x
+// min(b, radius of curvature of the front) (b at phi = pi/2, b^2/a at
+// phi = 0), but grows by at most `ring_ratio` from one column to the next;
+// every column has the same number of rings.
 //
 // Angles: the front point at parametric angle phi is (a cos phi, b sin phi, 0).
 #pragma once
@@ -58,7 +65,7 @@ namespace penny
                                             // K_I of the circle by 1.2e-4 more at 20 than at 40)
     unsigned int cells_along_front  = 16;   // edges along the quarter front (even)
     unsigned int cells_around_front = 8;    // sectors of the half-plane around the front (multiple of 4)
-    double       front_cell_size    = 1e-3; // radius of the innermost ring, in units of b
+    double       front_cell_size    = 1e-3; // innermost ring radius / min(b, radius of curvature)
     double       ring_ratio         = 1.6;  // nominal ratio of successive ring radii (the rings fill
                                             // the tube exactly, so the ratio used is close to it)
   };
@@ -75,9 +82,11 @@ namespace penny
   void make_elliptical_gap_mesh(dealii::Triangulation<3>          &triangulation,
                                 const EllipticalGapMeshParameters &p);
 
-  // Radii of the rings around the front in the reference meridian plane, from
-  // the innermost (front_cell_size) to the tube boundary (0.4); physical
-  // distances are these times b to a across the front, times c in z.
-  std::vector<double> front_ring_radii(const EllipticalGapMeshParameters &p);
+  // Radii of the rings around the front in the reference meridian plane of
+  // each column e = 0 ... cells_along_front (parametric angle e pi/(2
+  // cells_along_front)), from the innermost to the tube boundary (0.4), the
+  // same number on every column; physical distances are these times h(phi)
+  // (see above).
+  std::vector<std::vector<double>> front_ring_radii(const EllipticalGapMeshParameters &p);
 
 } // namespace penny

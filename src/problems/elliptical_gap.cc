@@ -89,8 +89,9 @@ namespace penny
                       "{4, 8, 12, ..., 64}");
       entries.number(
           "Front cell size", mesh.front_cell_size, 1e-3, interval("()", 0, 0.33),
-          "Radius of the innermost ring of cells around the front (a across the front at phi = 0, b at "
-          "pi/2). Units: b.");
+          "Radius of the innermost ring of cells around the front, in the front's normal plane, over "
+          "min(b, the front's radius of curvature) (b^2/a at phi = 0, b at pi/2); it grows by at most "
+          "Ring ratio from one column of front cells to the next. Units: none.");
       entries.number("Ring ratio", mesh.ring_ratio, 1.6, interval("(]", 1, 4),
                      "Nominal ratio of successive ring radii around the front. Units: none.");
       entries.integer(
