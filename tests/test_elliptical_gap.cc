@@ -61,7 +61,7 @@ namespace
     return model;
   }
 
-  // A coarse test-size model: K_I within about 7e-2 (measured 6.2e-2 at phi = pi/2).
+  // A coarse test-size model: K_I within about 7e-2 (measured 6.3e-2 at phi = pi/2).
   EllipticalGapMeasurement measure(const double pressure, const double aspect_ratio,
                                    const ResultFolder *fields)
   {
@@ -166,7 +166,7 @@ BOOST_AUTO_TEST_CASE(uniform_pressure_of_either_sign)
           }
       BOOST_TEST(solved.largest_error < 7e-2);
       // Linear in p: the test-size values of 1 MPa, recorded from one serial run.
-      const std::vector<double> recorded = {711294.4951285912, 875581.17919111717, 974246.87058128125};
+      const std::vector<double> recorded = {712506.40568882041, 875218.75405558175, 969747.03897441062};
       for (unsigned int i = 0; i < recorded.size(); ++i)
         BOOST_TEST(solved.signed_sifs.back()[i] == recorded[i] * pressure / 1e6, tt::tolerance(1e-8));
       BOOST_TEST(solved.opening_at_centre == solved.exact_opening_at_centre, tt::tolerance(6e-2));

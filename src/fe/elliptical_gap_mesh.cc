@@ -168,8 +168,10 @@ namespace penny
           return physical(core * cube_point(i, j, l), across);
         if (s <= tube_outer)
           return physical(Point<3>(radii[s] * direction(i, j, l)), across);
-        // Blended shells: in physical space, on the straight line from the
-        // last sphere's node to the box's, spaced geometrically.
+        // Blended shells, in physical space (in the reference space, whose box
+        // is R x R a/b x H sqrt(a/b), the blend folds cells of slender gaps):
+        // per node, the direction turning from the last sphere's node to the
+        // box's and the distance growing geometrically.
         const Point<3> inner = physical(Point<3>(radii[tube_outer] * direction(i, j, l)), across);
         const Point<3> outer =
             physical(Point<3>(box[0] * cube_point(i, j, l)[0], box[1] * cube_point(i, j, l)[1],
@@ -177,9 +179,9 @@ namespace penny
                      0);
         if (s == n_shells)
           return outer;
-        const double lambda = static_cast<double>(s - tube_outer) / (n_shells - tube_outer);
-        const double growth = outer.norm() / inner.norm();
-        return inner + (std::pow(growth, lambda) - 1) / (growth - 1) * (outer - inner);
+        const double       lambda = static_cast<double>(s - tube_outer) / (n_shells - tube_outer);
+        const Tensor<1, 3> blend  = (1 - lambda) * inner / inner.norm() + lambda * outer / outer.norm();
+        return Point<3>(inner.norm() * std::pow(outer.norm() / inner.norm(), lambda) * blend / blend.norm());
       }
 
       // Physical position of the web node (t, zeta) = (r - 1, theta) on column e.

@@ -8,8 +8,9 @@
 // cube [0, c0]^3 of m x m x m' cells, spherical shells around it (each shell
 // one cell thick, its surface split into the three patches of the
 // cube-sphere: X and Y next to the equator, Z around the pole) and, beyond
-// the shell r = 1.4, shells whose nodes run on straight lines (in physical
-// space) from that shell's nodes to the box's, spaced geometrically: cells
+// the shell r = 1.4, shells blended in physical space from that shell to the
+// box (per node, the direction turning from the shell's node to the box's,
+// the distance growing geometrically): cells
 // grow like the distance from the crack in every direction, so the far field
 // costs few cells and none is a needle. The shells' thickness follows the
 // angular cell width, but stops shrinking past 16 cells along the front, so
