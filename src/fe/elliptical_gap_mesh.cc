@@ -328,14 +328,14 @@ namespace penny
     check(p.front_cell_size > 0 && p.front_cell_size < tube_half_width / 1.2,
           "front_cell_size must lie in (0, " + std::to_string(tube_half_width / 1.2) + ")");
     check(p.ring_ratio > 1, "ring_ratio must exceed 1");
-    const double        a = p.semi_axis_a, b = p.semi_axis_b;
-    const unsigned int  columns = p.cells_along_front + 1;
-    std::vector<double> innermost(columns);
+    const double          a = p.semi_axis_a, b = p.semi_axis_b;
+    const unsigned int    columns = p.cells_along_front + 1;
+    const EllipticalFront front(a, b);
+    std::vector<double>   innermost(columns);
     for (unsigned int e = 0; e < columns; ++e)
       {
-        const double phi       = e * M_PI / (2 * p.cells_along_front);
-        const double curvature = a * b / std::pow(std::hypot(a * std::sin(phi), b * std::cos(phi)), 3);
-        innermost[e]           = p.front_cell_size * std::min(b, 1 / curvature) / height_scale(a, b, phi);
+        const double phi = e * M_PI / (2 * p.cells_along_front);
+        innermost[e] = p.front_cell_size * std::min(b, 1 / front.curvature(phi)) / height_scale(a, b, phi);
       }
     for (unsigned int e = 1; e < columns; ++e)
       innermost[e] = std::min(innermost[e], p.ring_ratio * innermost[e - 1]);
