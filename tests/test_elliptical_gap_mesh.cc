@@ -1,6 +1,7 @@
 // The elliptical-gap mesh (front on the ellipse before and after refinement,
 // positive Jacobians with the quadratic mapping the 3D model uses, boundary
-// ids on their planes, the box volume, serial and distributed builds) and the
+// ids on their planes, the box volume, the front's chart and its derivative,
+// serial and distributed builds) and the
 // Green-Sneddon closed forms (circle limit, symmetries, volume and K_I from w).
 #define BOOST_TEST_MODULE elliptical_gap_mesh
 #define BOOST_TEST_NO_MAIN
@@ -13,6 +14,7 @@
 #include <deal.II/fe/fe_nothing.h>
 #include <deal.II/fe/fe_values.h>
 #include <deal.II/fe/mapping_q.h>
+#include <deal.II/grid/manifold.h>
 
 #include <boost/math/quadrature/tanh_sinh.hpp>
 #include <boost/test/unit_test.hpp>
@@ -211,6 +213,40 @@ BOOST_AUTO_TEST_CASE(boundary_ids_on_their_planes)
       check_boundary_ids(triangulation, p);
       triangulation.refine_global();
       check_boundary_ids(triangulation, p);
+    }
+}
+
+// The front's chart: pull_back inverts push_forward, and push_forward_gradient
+// is its derivative (central differences), over the swept cells' range of
+// (r, theta, phi), including points on the front and next to it.
+BOOST_AUTO_TEST_CASE(front_chart_is_consistent)
+{
+  for (const double b_over_a : {1., 0.5, 0.1, 0.02})
+    {
+      const EllipticalGapMeshParameters p = small_mesh(b_over_a);
+      Triangulation<3>                  triangulation;
+      make_elliptical_gap_mesh(triangulation, p);
+      const auto &chart =
+          dynamic_cast<const ChartManifold<3> &>(triangulation.get_manifold(elliptical_front_manifold_id));
+      for (const double r : {0.4, 0.99, 1., 1.0001, 1.3})
+        for (const double theta : {0., 1e-4, 0.2, 1.2})
+          for (const double phi : {0., 1e-3, 0.05, 0.3, 0.785, 1.5, M_PI / 2})
+            BOOST_TEST_CONTEXT("b/a = " << b_over_a << ", (r, theta, phi) = " << Point<3>(r, theta, phi))
+            {
+              const Point<3> c(r, theta, phi), x = chart.push_forward(c);
+              BOOST_TEST(chart.pull_back(x).distance(c) < 1e-12);
+              const DerivativeForm<1, 3, 3> gradient = chart.push_forward_gradient(c);
+              for (unsigned int j = 0; j < 3; ++j)
+                {
+                  Tensor<1, 3> step;
+                  step[j] = 1e-7;
+                  const Tensor<1, 3> slope =
+                      (chart.push_forward(c + step) - chart.push_forward(c - step)) / 2e-7;
+                  for (unsigned int i = 0; i < 3; ++i)
+                    BOOST_TEST(std::abs(gradient[i][j] - slope[i]) <=
+                               1e-6 * (p.semi_axis_a + std::abs(slope[i])));
+                }
+            }
     }
 }
 
