@@ -1,8 +1,8 @@
 // The elliptical-gap mesh (front on the ellipse before and after refinement,
 // positive Jacobians with the quadratic mapping the 3D model uses, boundary
 // ids on their planes, the box volume, the front's chart and its derivative,
-// serial and distributed builds) and the
-// Green-Sneddon closed forms (circle limit, symmetries, volume and K_I from w).
+// serial and distributed builds) and the Green-Sneddon closed forms (circle
+// limit, symmetries, volume and K_I from w).
 #define BOOST_TEST_MODULE elliptical_gap_mesh
 #define BOOST_TEST_NO_MAIN
 #include "closed_forms/elliptical_crack.h"
