@@ -49,54 +49,133 @@ namespace penny
              std::pow(std::hypot(b * std::cos(phi), a * std::sin(phi)), 3);
     }
 
-    // Stretched spherical coordinates (r, theta, phi):
-    // x = a r cos(theta) cos(phi), y = b r cos(theta) sin(phi), z = h(phi) r sin(theta),
+    // The columns' turn towards the front's normal. The stretched plane's
+    // radial line through the front point at parametric angle phi leans on
+    // the front: its step per unit of R, (a cos, b sin), has the component h
+    // across the front and (b^2 - a^2) sin cos/|(a sin, b cos)| along it,
+    // 5 times larger at phi = pi/4 for b/a = 0.1 (cells sheared by 79
+    // degrees). A point at (R, Z) of the meridian plane, at the distance
+    // rho = |(R - 1, Z)| from the front, is turned by the angle
+    //   S = g lambda tanh(rho/lambda) (R - 1)/rho,  g = (a^2 - b^2) sin cos/H^2,
+    // H^2 = b^2 cos^2 + a^2 sin^2, which is g (R - 1) near the front (the
+    // turn that cancels the lean: columns leave the front along its normal)
+    // and g lambda (R - 1)/rho beyond the depth lambda, varying on the scale
+    // rho of the cells there. lambda, in units of r, is a harmonic mean of L,
+    // c q (c times the distance to the centre of curvature, where normals
+    // cross, q = H^4/(a b)^2) and k H^2/(a^2 - b^2) (so that the largest
+    // turn, g lambda <= (k/2) sin 2 phi, keeps psi = phi + S increasing).
+    class ColumnTurn
+    {
+    public:
+      ColumnTurn(const double a, const double b) : a(a), b(b) {}
+
+      struct Value
+      {
+        double turn     = 0; // S
+        double d_radius = 0; // dS/dR
+        double d_height = 0; // dS/dZ
+        double d_phi    = 0; // dS/dphi
+        double lean     = 0; // g, also -h'/h
+      };
+
+      // S and its derivatives at parametric angle phi (cos, sin given so that
+      // they are exact on the symmetry planes), R and Z.
+      Value operator()(const double cp, const double sp, const double R, const double Z) const
+      {
+        const double d = a * a - b * b, ab2 = a * a * b * b;
+        const double H2 = b * b * cp * cp + a * a * sp * sp, dH2 = 2 * d * sp * cp;
+        const double g = d * sp * cp / H2, dg = d * ((cp * cp - sp * sp) * H2 - sp * cp * dH2) / (H2 * H2);
+        const double q = H2 * H2 / ab2, dq = 2 * H2 * dH2 / ab2;
+        const double lambda  = 1 / (d / (k * H2) + 1 / L + 1 / (c * q));
+        const double dlambda = lambda * lambda * (d * dH2 / (k * H2 * H2) + dq / (c * q * q));
+        // S = T(rho) (R - 1), T = g t(u), t(u) = tanh(u)/u, u = rho/lambda;
+        // t and t'(u)/u by their series where u is small.
+        const double delta = R - 1, rho2 = delta * delta + Z * Z, u = std::sqrt(rho2) / lambda;
+        const double th = std::tanh(u);
+        const double t  = u < 1e-3 ? 1 - u * u / 3 : th / u;
+        const double t1 = u < 1e-3 ? -2. / 3 + 8 * u * u / 15 : ((1 - th * th) * u - th) / (u * u * u);
+        const double T = g * t, dT_over_rho = g * t1 / (lambda * lambda); // dT/drho / rho
+        const double dT_dphi = dg * t - g * t1 * rho2 * dlambda / (lambda * lambda * lambda);
+        return {T * delta, T + dT_over_rho * delta * delta, dT_over_rho * delta * Z, dT_dphi * delta, g};
+      }
+
+    private:
+      static constexpr double c = 0.5; // fraction of the distance to the centre of curvature
+      static constexpr double k = 0.5; // bound of the largest turn's derivative in phi
+      static constexpr double L = 1;   // largest turning depth, in units of r
+      const double            a;
+      const double            b;
+    };
+
+    // Stretched spherical coordinates (r, theta, phi) with turned columns:
+    // R = r cos(theta), Z = r sin(theta), psi = phi + S(phi, R, Z),
+    // x = a R cos(psi), y = b R sin(psi), z = h(phi) Z,
     // h the height scale. The front is r = 1, theta = 0; phi is its parametric angle.
     class EllipticalFrontChart : public ChartManifold<3>
     {
     public:
-      EllipticalFrontChart(const double a, const double b) : a(a), b(b) {}
+      EllipticalFrontChart(const double a, const double b) : a(a), b(b), turn(a, b) {}
 
       std::unique_ptr<Manifold<3>> clone() const override
       {
         return std::make_unique<EllipticalFrontChart>(a, b);
       }
 
+      // R and psi from the stretched plane, then phi from psi = phi + S(phi,
+      // R, z/h(phi)) by Newton's method kept inside a bracket (the left side
+      // increases with phi: h' = -g h, d/dphi = 1 + S_phi + g Z S_Z > 0).
       Point<3> pull_back(const Point<3> &x) const override
       {
-        const double X = x[0] / a, Y = x[1] / b, phi = std::atan2(Y, X), Z = x[2] / height_scale(a, b, phi);
-        const double rho = std::hypot(X, Y);
-        return {std::hypot(rho, Z), std::atan2(Z, rho), phi};
+        const double X = x[0] / a, Y = x[1] / b, R = std::hypot(X, Y), psi = std::atan2(Y, X);
+        const auto   height = [&](const double phi) { return x[2] / height_scale(a, b, phi); };
+        double       lower = psi - M_PI / 2, upper = psi + M_PI / 2, phi = psi;
+        for (unsigned int iteration = 0; iteration < 100; ++iteration)
+          {
+            const double Z        = height(phi);
+            const auto   value    = turn(std::cos(phi), std::sin(phi), R, Z);
+            const double residual = phi + value.turn - psi;
+            if (std::abs(residual) < 1e-15)
+              break;
+            (residual > 0 ? upper : lower) = phi;
+            const double newton = phi - residual / (1 + value.d_phi + value.lean * Z * value.d_height);
+            phi                 = newton > lower && newton < upper ? newton : (lower + upper) / 2;
+          }
+        const double Z = height(phi);
+        return {std::hypot(R, Z), std::atan2(Z, R), phi};
       }
 
       Point<3> push_forward(const Point<3> &chart) const override
       {
-        const double r = chart[0], ct = std::cos(chart[1]), st = std::sin(chart[1]);
-        return {a * r * ct * std::cos(chart[2]), b * r * ct * std::sin(chart[2]),
-                height_scale(a, b, chart[2]) * r * st};
+        const double R = chart[0] * std::cos(chart[1]), Z = chart[0] * std::sin(chart[1]), phi = chart[2];
+        const double psi = phi + turn(std::cos(phi), std::sin(phi), R, Z).turn;
+        return {a * R * std::cos(psi), b * R * std::sin(psi), height_scale(a, b, phi) * Z};
       }
 
       DerivativeForm<1, 3, 3> push_forward_gradient(const Point<3> &chart) const override
       {
-        const double            r = chart[0], ct = std::cos(chart[1]), st = std::sin(chart[1]);
-        const double            cp = std::cos(chart[2]), sp = std::sin(chart[2]);
-        const double            h = height_scale(a, b, chart[2]);
-        DerivativeForm<1, 3, 3> gradient;
-        gradient[0][0] = a * ct * cp;
-        gradient[0][1] = -a * r * st * cp;
-        gradient[0][2] = -a * r * ct * sp;
-        gradient[1][0] = b * ct * sp;
-        gradient[1][1] = -b * r * st * sp;
-        gradient[1][2] = b * r * ct * cp;
-        gradient[2][0] = h * st;
-        gradient[2][1] = h * r * ct;
-        gradient[2][2] = height_scale_derivative(a, b, chart[2]) * r * st;
+        const double r = chart[0], ct = std::cos(chart[1]), st = std::sin(chart[1]), phi = chart[2];
+        const double R = r * ct, Z = r * st;
+        const auto   value = turn(std::cos(phi), std::sin(phi), R, Z);
+        const double cp = std::cos(phi + value.turn), sp = std::sin(phi + value.turn);
+        // d(R, Z, psi)/d(r, theta, phi)
+        const std::array<double, 3> dR = {{ct, -r * st, 0}}, dZ = {{st, r * ct, 0}};
+        DerivativeForm<1, 3, 3>     gradient;
+        for (unsigned int j = 0; j < 3; ++j)
+          {
+            const double dpsi =
+                value.d_radius * dR[j] + value.d_height * dZ[j] + (j == 2 ? 1 + value.d_phi : 0);
+            gradient[0][j] = a * (cp * dR[j] - R * sp * dpsi);
+            gradient[1][j] = b * (sp * dR[j] + R * cp * dpsi);
+            gradient[2][j] = height_scale(a, b, phi) * dZ[j];
+          }
+        gradient[2][2] = height_scale_derivative(a, b, phi) * Z;
         return gradient;
       }
 
     private:
-      const double a;
-      const double b;
+      const double     a;
+      const double     b;
+      const ColumnTurn turn;
     };
 
     void check(const bool condition, const std::string &message)
@@ -132,7 +211,8 @@ namespace penny
             m(p.cells_along_front / 2), sectors(p.cells_around_front), tube_rows(sectors / 4),
             upper_rows(std::max(1L, std::lround(0.3 / radial_angle(m)))), rows(tube_rows + upper_rows),
             rings(front_ring_radii(p)), box({p.domain_width, p.domain_width * p.semi_axis_a / p.semi_axis_b,
-                                             p.domain_height * p.semi_axis_a / scale[2]})
+                                             p.domain_height * p.semi_axis_a / scale[2]}),
+            turn(p.semi_axis_a, p.semi_axis_b)
       {
         const double angle   = radial_angle(m);
         const double inner_g = std::exp(inner_shell_aspect * angle);
@@ -269,15 +349,20 @@ namespace penny
         return p / p.norm();
       }
 
-      // Physical point of a reference point: the height scale h(phi) where
-      // weight = 1 (every node of the swept cells), sqrt(a b) where it is 0
-      // (the z-axis, the box), blended between.
+      // Physical point of a reference point: the height scale h(phi) and the
+      // columns' turn where weight = 1 (every node of the swept cells), sqrt(a b)
+      // and no turn where it is 0 (the z-axis, the box), blended between.
       Point<3> physical(const Point<3> &reference, const double weight) const
       {
-        const double phi    = std::atan2(reference[1], reference[0]);
+        const double X = reference[0], Y = reference[1], R = std::hypot(X, Y);
+        const double phi    = std::atan2(Y, X);
         const double height = (1 - weight) * scale[2] + weight * height_scale(scale[0], scale[1], phi);
-        return {scale[0] * reference[0], scale[1] * reference[1], height * reference[2]};
+        const double angle  = R > 0 ? weight * turn(X / R, Y / R, R, reference[2]).turn : 0;
+        const double c = std::cos(angle), s = std::sin(angle);
+        return {scale[0] * (c * X - s * Y), scale[1] * (s * X + c * Y), height * reference[2]};
       }
+
+      const ColumnTurn turn;
     };
 
     // Vertices by key: {0, s, i, j, l} for lattice nodes, {1, e, k, i, 0} for

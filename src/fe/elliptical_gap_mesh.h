@@ -26,17 +26,21 @@
 // 18 refinement levels in 3D); the coarse mesh is conforming.
 //
 // Mapping. The swept cells (the X and Y patches from the innermost sphere to
-// r = 1.4, spider web included) carry a ChartManifold, the stretched
-// spherical coordinates (r, theta, phi):
-//   x = a r cos(theta) cos(phi), y = b r cos(theta) sin(phi), z = h(phi) r sin(theta),
+// r = 1.4, spider web included) carry a ChartManifold, stretched spherical
+// coordinates (r, theta, phi) with turned columns:
+//   R = r cos(theta), Z = r sin(theta), psi = phi + S(phi, R, Z),
+//   x = a R cos(psi), y = b R sin(psi), z = h(phi) Z,
 // h(phi) = a b/|(b cos phi, a sin phi)| the distance across the front in its
 // normal plane per unit of r, so that the web's circles are circles in the
 // front's normal plane at every phi (cells across the front are as tall as
-// wide). Refinement places new front points at r = 1, theta = 0, exactly on
-// the ellipse. Towards the z-axis (across the pole patch and the core) the
-// height scale blends into sqrt(a b); those cells, and the outer shells', are flat, their interior
-// points interpolated from their faces by deal.II, so refined cells stay well
-// shaped.
+// wide), and S the turn that makes each column leave the front along its
+// normal (the stretched plane's radial lines lean on the front, by up to 79
+// degrees at b/a = 0.1), fading beyond a depth limited where the front's
+// normals cross. Refinement places new front points at r = 1, theta = 0,
+// exactly on the ellipse. Towards the z-axis (across the pole patch and the
+// core) the height scale blends into sqrt(a b) and the turn into none; those
+// cells, and the outer shells', are flat, their interior points interpolated
+// from their faces by deal.II, so refined cells stay well shaped.
 //
 // Rings. The innermost ring has the physical radius `front_cell_size` x
 // min(b, radius of curvature of the front) (b at phi = pi/2, b^2/a at
