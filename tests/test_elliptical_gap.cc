@@ -71,15 +71,19 @@ namespace
   }
 } // namespace
 
+// The weight is a bump in the front coordinate psi (b/a = 1/2 here), its
+// moments 1 ... 4 in psi zero.
 BOOST_AUTO_TEST_CASE(front_weight_without_its_first_four_moments)
 {
   const double                centre = 0.7, h = 0.3;
-  const FrontSegmentExtension q(nearest, centre, h, 0.1);
+  const FrontSegmentExtension q(nearest, front.parametric_angle(centre), h, 0.1);
   for (const unsigned int power : {0, 1, 2, 3, 4})
     {
-      const double moment =
-          simpson([&](const double phi) { return q.front_weight(phi) * std::pow(phi - centre, power); },
-                  centre - h, centre + h);
+      const double moment = simpson(
+          [&](const double psi) {
+            return q.front_weight(front.parametric_angle(psi)) * std::pow(psi - centre, power);
+          },
+          centre - h, centre + h);
       if (power == 0)
         BOOST_TEST(moment == h * 16384. / 45045, tt::tolerance(1e-10)); // int k = 16384/45045 on (-1, 1)
       else
@@ -87,23 +91,48 @@ BOOST_AUTO_TEST_CASE(front_weight_without_its_first_four_moments)
     }
   // The front measure is int_0^(pi/2) f |dx/dphi| dphi.
   const double measure =
-      simpson([&](const double phi) { return q.front_weight(phi) * front.arc_length_rate(phi); }, centre - h,
-              centre + h);
+      simpson([&](const double phi) { return q.front_weight(phi) * front.arc_length_rate(phi); },
+              front.parametric_angle(centre - h), front.parametric_angle(centre + h));
   BOOST_TEST(q.front_measure() == measure, tt::tolerance(1e-10));
 }
 
 BOOST_AUTO_TEST_CASE(front_weight_folded_at_the_symmetry_planes)
 {
-  const double                h = 0.3;
-  const FrontSegmentExtension inside(nearest, 0.7, h, 0.1), at_x_axis(nearest, 0, h, 0.1),
+  const double                h   = 0.3;
+  const auto                  phi = [](const double psi) { return front.parametric_angle(psi); };
+  const FrontSegmentExtension inside(nearest, phi(0.7), h, 0.1), at_x_axis(nearest, 0, h, 0.1),
       at_y_axis(nearest, M_PI / 2, h, 0.1);
   for (const double s : {0., 0.1, 0.25, 0.29})
     {
-      BOOST_TEST(at_x_axis.front_weight(s) == 2 * inside.front_weight(0.7 + s), tt::tolerance(1e-12));
-      BOOST_TEST(at_y_axis.front_weight(M_PI / 2 - s) == 2 * inside.front_weight(0.7 - s),
+      BOOST_TEST(at_x_axis.front_weight(phi(s)) == 2 * inside.front_weight(phi(0.7 + s)),
+                 tt::tolerance(1e-12));
+      BOOST_TEST(at_y_axis.front_weight(phi(M_PI / 2 - s)) == 2 * inside.front_weight(phi(0.7 - s)),
                  tt::tolerance(1e-12));
     }
-  BOOST_TEST(at_x_axis.front_weight(h) == 0.);
+  BOOST_TEST(at_x_axis.front_weight(phi(h)) == 0.);
+}
+
+// The front coordinate: its inverse, its rate against a central difference,
+// its symmetries, and psi = phi on the circle.
+BOOST_AUTO_TEST_CASE(front_coordinate)
+{
+  for (const double phi : {0., 0.05, 0.4, 1.1, M_PI / 2})
+    {
+      const double psi = front.front_coordinate(phi);
+      BOOST_TEST(front.parametric_angle(psi) == phi, tt::tolerance(1e-14));
+      BOOST_TEST(front.front_coordinate(-phi) == -psi, tt::tolerance(1e-14));
+      BOOST_TEST(front.front_coordinate(M_PI - phi) == M_PI - psi, tt::tolerance(1e-14));
+      const double step = 1e-6,
+                   difference =
+                       (front.front_coordinate(phi + step) - front.front_coordinate(phi - step)) / (2 * step);
+      BOOST_TEST(front.front_coordinate_rate(phi) == difference, tt::tolerance(1e-8));
+      BOOST_TEST(EllipticalFront(1.5, 1.5).front_coordinate(phi) == phi, tt::tolerance(1e-15));
+    }
+  // The ends exactly; d psi/d phi = (1 + a/b)/2 at 0, (1 + b/a)/2 at pi/2.
+  BOOST_TEST(front.parametric_angle(0) == 0.);
+  BOOST_TEST(front.parametric_angle(M_PI / 2) == M_PI / 2);
+  BOOST_TEST(front.front_coordinate_rate(0) == 1.5, tt::tolerance(1e-15));
+  BOOST_TEST(front.front_coordinate_rate(M_PI / 2) == 0.75, tt::tolerance(1e-15));
 }
 
 BOOST_AUTO_TEST_CASE(gradient_of_the_extension_by_finite_differences)
@@ -287,7 +316,7 @@ BOOST_AUTO_TEST_CASE(summit_searches_on_the_closed_form)
   const AdhesionlessSummitGap gap = adhesionless_gap(s0, ends(s0));
   BOOST_TEST(gap.tension_aspect_ratio == rho, tt::tolerance(1e-5));
   BOOST_TEST(gap.aspect_ratio > rho); // the gap is rounder than its tension region
-  for (const auto &K : galin(gap.aspect_ratio, front_point_angles(7)))
+  for (const auto &K : galin(gap.aspect_ratio, front_point_angles(7, EllipticalFront(1, 1))))
     BOOST_TEST(std::abs(gap.relative_sif(K)) < 1e-9);
 
   const double            s1       = adhesive_summit_shape(galin, rho, s0);

@@ -48,16 +48,16 @@ namespace
     return std::abs(std::pow(x[0] / p.semi_axis_a, 2) + std::pow(x[1] / p.semi_axis_b, 2) - 1);
   }
 
-  // Front vertices: on the ellipse and on z = 0 to 1e-12, at the parametric
-  // angles e pi/(2n) of n equal steps, joined by n mesh edges.
+  // Front vertices: on the ellipse and on z = 0 to 1e-12, at the front
+  // coordinates e pi/(2n) of n equal steps, joined by n mesh edges.
   void check_front(const Triangulation<3> &triangulation, const EllipticalGapMeshParameters &p,
                    const unsigned int n)
   {
-    const std::vector<double> angles =
-        front_vertex_angles(triangulation, EllipticalFront(p.semi_axis_a, p.semi_axis_b));
+    const EllipticalFront     front(p.semi_axis_a, p.semi_axis_b);
+    const std::vector<double> angles = front_vertex_angles(triangulation, front);
     BOOST_TEST_REQUIRE(angles.size() == n + 1);
     for (unsigned int e = 0; e <= n; ++e)
-      BOOST_TEST(angles[e] == e * M_PI / (2 * n), tt::tolerance(1e-12));
+      BOOST_TEST(front.front_coordinate(angles[e]) == e * M_PI / (2 * n), tt::tolerance(1e-12));
 
     // Edges with both ends on the front, by the angle of their midpoint (on a
     // distributed mesh gathered over the ranks, whose cells share edges).
@@ -259,7 +259,7 @@ BOOST_AUTO_TEST_CASE(columns_normal_to_the_front)
 
 // The front's chart: pull_back inverts push_forward, and push_forward_gradient
 // is its derivative (central differences), over the swept cells' range of
-// (r, theta, phi), including points on the front and next to it.
+// (r, theta, psi), including points on the front and next to it.
 BOOST_AUTO_TEST_CASE(front_chart_is_consistent)
 {
   for (const double b_over_a : {1., 0.5, 0.1, 0.02})
@@ -271,10 +271,10 @@ BOOST_AUTO_TEST_CASE(front_chart_is_consistent)
           dynamic_cast<const ChartManifold<3> &>(triangulation.get_manifold(elliptical_front_manifold_id));
       for (const double r : {0.4, 0.99, 1., 1.0001, 1.3})
         for (const double theta : {0., 1e-4, 0.2, 1.2})
-          for (const double phi : {0., 1e-3, 0.05, 0.3, 0.785, 1.5, M_PI / 2})
-            BOOST_TEST_CONTEXT("b/a = " << b_over_a << ", (r, theta, phi) = " << Point<3>(r, theta, phi))
+          for (const double psi : {0., 1e-3, 0.05, 0.3, 0.785, 1.5, M_PI / 2})
+            BOOST_TEST_CONTEXT("b/a = " << b_over_a << ", (r, theta, psi) = " << Point<3>(r, theta, psi))
             {
-              const Point<3> c(r, theta, phi), x = chart.push_forward(c);
+              const Point<3> c(r, theta, psi), x = chart.push_forward(c);
               BOOST_TEST(chart.pull_back(x).distance(c) < 1e-12);
               const DerivativeForm<1, 3, 3> gradient = chart.push_forward_gradient(c);
               for (unsigned int j = 0; j < 3; ++j)
@@ -366,7 +366,8 @@ BOOST_AUTO_TEST_CASE(geometric_rings)
       // The innermost: front_cell_size x min(b, radius of curvature) over h,
       // bounded by that of every other column times ring_ratio^(columns apart).
       const auto unlimited = [&](const unsigned int e) {
-        const double phi = e * M_PI / 16, n = std::hypot(b * std::cos(phi), a * std::sin(phi));
+        const double phi = EllipticalFront(a, b).parametric_angle(e * M_PI / 16),
+                     n   = std::hypot(b * std::cos(phi), a * std::sin(phi));
         const double radius_of_curvature =
             std::pow(std::hypot(a * std::sin(phi), b * std::cos(phi)), 3) / (a * b);
         return 1e-3 * std::min(b, radius_of_curvature) / (a * b / n);

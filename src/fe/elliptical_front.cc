@@ -1,9 +1,12 @@
 #include "fe/elliptical_front.h"
 
+#include "numerics/root_finding.h"
+
 #include <deal.II/base/mpi.h>
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace penny
 {
@@ -39,6 +42,33 @@ namespace penny
   double EllipticalFront::curvature(const double phi) const
   {
     return a * b / std::pow(arc_length_rate(phi), 3);
+  }
+
+  double EllipticalFront::front_coordinate(const double phi) const
+  {
+    return (phi + std::atan2(a * std::sin(phi), b * std::cos(phi))) / 2;
+  }
+
+  double EllipticalFront::front_coordinate_rate(const double phi) const
+  {
+    return (1 + a * b / std::pow(arc_length_rate(phi), 2)) / 2;
+  }
+
+  // On [0, pi/2], psi - phi = (alpha - phi)/2 lies in [0, pi/4]: the root is
+  // bracketed by [psi - pi/4, psi]. Beyond, by the symmetries.
+  double EllipticalFront::parametric_angle(const double psi) const
+  {
+    if (!(psi >= -M_PI / 2 && psi <= M_PI))
+      throw std::invalid_argument("EllipticalFront::parametric_angle: psi must lie in [-pi/2, pi]");
+    if (psi < 0)
+      return -parametric_angle(-psi);
+    if (psi > M_PI / 2)
+      return M_PI - parametric_angle(M_PI - psi);
+    if (psi == 0 || psi == M_PI / 2 || a == b)
+      return psi;
+    const auto   residual = [&](const double phi) { return front_coordinate(phi) - psi; };
+    const double lo       = std::max(0., psi - M_PI / 4);
+    return bracketed_root(residual, lo, psi, residual(lo), residual(psi), closed_form_root_bits);
   }
 
   // The nearest point of the ellipse to (x, y), by Eberly's robust bisection

@@ -28,6 +28,19 @@ namespace penny
     double arc_length_rate(double phi) const;
     // Curvature a b/|dx/dphi|^3; its largest value, a/b^2, is at phi = 0.
     double curvature(double phi) const;
+    // The front coordinate psi = (phi + alpha)/2, the mean of the parametric
+    // angle and the angle alpha of the normal (tan alpha = (a/b) tan phi), in
+    // which the mesh's columns and the weights along the front are evenly
+    // spaced: d psi/d phi is (1 + a/b)/2 at phi = 0, where the front turns
+    // fastest, and (1 + b/a)/2 (at least 1/2) at pi/2, where it is
+    // straightest. psi = phi on the circle; psi(-phi) = -psi(phi),
+    // psi(pi - phi) = pi - psi(phi).
+    double front_coordinate(double phi) const;
+    // d psi/d phi = (1 + a b/|dx/dphi|^2)/2.
+    double front_coordinate_rate(double phi) const;
+    // The parametric angle phi of front coordinate psi in [-pi/2, pi] (exact
+    // at 0 and pi/2).
+    double parametric_angle(double psi) const;
     double semi_axis_a() const { return a; }
     double semi_axis_b() const { return b; }
 

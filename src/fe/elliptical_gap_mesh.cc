@@ -107,33 +107,35 @@ namespace penny
       const double            b;
     };
 
-    // Stretched spherical coordinates (r, theta, phi) with turned columns:
-    // R = r cos(theta), Z = r sin(theta), psi = phi + S(phi, R, Z),
-    // x = a R cos(psi), y = b R sin(psi), z = h(phi) Z,
-    // h the height scale. The front is r = 1, theta = 0; phi is its parametric angle.
+    // Stretched spherical coordinates (r, theta, psi), psi the front
+    // coordinate (EllipticalFront::front_coordinate, in which the columns are
+    // evenly spaced) of the parametric angle phi, with turned columns:
+    // R = r cos(theta), Z = r sin(theta), beta = phi + S(phi, R, Z),
+    // x = a R cos(beta), y = b R sin(beta), z = h(phi) Z,
+    // h the height scale. The front is r = 1, theta = 0.
     class EllipticalFrontChart : public ChartManifold<3>
     {
     public:
-      EllipticalFrontChart(const double a, const double b) : a(a), b(b), turn(a, b) {}
+      EllipticalFrontChart(const double a, const double b) : a(a), b(b), front(a, b), turn(a, b) {}
 
       std::unique_ptr<Manifold<3>> clone() const override
       {
         return std::make_unique<EllipticalFrontChart>(a, b);
       }
 
-      // R and psi from the stretched plane, then phi from psi = phi + S(phi,
+      // R and beta from the stretched plane, then phi from beta = phi + S(phi,
       // R, z/h(phi)) by Newton's method kept inside a bracket (the left side
       // increases with phi: h' = -g h, d/dphi = 1 + S_phi + g Z S_Z > 0).
       Point<3> pull_back(const Point<3> &x) const override
       {
-        const double X = x[0] / a, Y = x[1] / b, R = std::hypot(X, Y), psi = std::atan2(Y, X);
+        const double X = x[0] / a, Y = x[1] / b, R = std::hypot(X, Y), beta = std::atan2(Y, X);
         const auto   height = [&](const double phi) { return x[2] / height_scale(a, b, phi); };
-        double       lower = psi - M_PI / 2, upper = psi + M_PI / 2, phi = psi;
+        double       lower = beta - M_PI / 2, upper = beta + M_PI / 2, phi = beta;
         for (unsigned int iteration = 0; iteration < 100; ++iteration)
           {
             const double Z        = height(phi);
             const auto   value    = turn(std::cos(phi), std::sin(phi), R, Z);
-            const double residual = phi + value.turn - psi;
+            const double residual = phi + value.turn - beta;
             if (std::abs(residual) < 1e-15)
               break;
             (residual > 0 ? upper : lower) = phi;
@@ -141,41 +143,44 @@ namespace penny
             phi                 = newton > lower && newton < upper ? newton : (lower + upper) / 2;
           }
         const double Z = height(phi);
-        return {std::hypot(R, Z), std::atan2(Z, R), phi};
+        return {std::hypot(R, Z), std::atan2(Z, R), front.front_coordinate(phi)};
       }
 
       Point<3> push_forward(const Point<3> &chart) const override
       {
-        const double R = chart[0] * std::cos(chart[1]), Z = chart[0] * std::sin(chart[1]), phi = chart[2];
-        const double psi = phi + turn(std::cos(phi), std::sin(phi), R, Z).turn;
-        return {a * R * std::cos(psi), b * R * std::sin(psi), height_scale(a, b, phi) * Z};
+        const double R = chart[0] * std::cos(chart[1]), Z = chart[0] * std::sin(chart[1]);
+        const double phi  = front.parametric_angle(chart[2]);
+        const double beta = phi + turn(std::cos(phi), std::sin(phi), R, Z).turn;
+        return {a * R * std::cos(beta), b * R * std::sin(beta), height_scale(a, b, phi) * Z};
       }
 
       DerivativeForm<1, 3, 3> push_forward_gradient(const Point<3> &chart) const override
       {
-        const double r = chart[0], ct = std::cos(chart[1]), st = std::sin(chart[1]), phi = chart[2];
-        const double R = r * ct, Z = r * st;
+        const double r = chart[0], ct = std::cos(chart[1]), st = std::sin(chart[1]);
+        const double R = r * ct, Z = r * st, phi = front.parametric_angle(chart[2]);
+        const double dphi  = 1 / front.front_coordinate_rate(phi); // dphi/dpsi
         const auto   value = turn(std::cos(phi), std::sin(phi), R, Z);
-        const double cp = std::cos(phi + value.turn), sp = std::sin(phi + value.turn);
-        // d(R, Z, psi)/d(r, theta, phi)
+        const double cb = std::cos(phi + value.turn), sb = std::sin(phi + value.turn);
+        // d(R, Z, beta)/d(r, theta, psi)
         const std::array<double, 3> dR = {{ct, -r * st, 0}}, dZ = {{st, r * ct, 0}};
         DerivativeForm<1, 3, 3>     gradient;
         for (unsigned int j = 0; j < 3; ++j)
           {
-            const double dpsi =
-                value.d_radius * dR[j] + value.d_height * dZ[j] + (j == 2 ? 1 + value.d_phi : 0);
-            gradient[0][j] = a * (cp * dR[j] - R * sp * dpsi);
-            gradient[1][j] = b * (sp * dR[j] + R * cp * dpsi);
+            const double dbeta =
+                value.d_radius * dR[j] + value.d_height * dZ[j] + (j == 2 ? (1 + value.d_phi) * dphi : 0);
+            gradient[0][j] = a * (cb * dR[j] - R * sb * dbeta);
+            gradient[1][j] = b * (sb * dR[j] + R * cb * dbeta);
             gradient[2][j] = height_scale(a, b, phi) * dZ[j];
           }
-        gradient[2][2] = height_scale_derivative(a, b, phi) * Z;
+        gradient[2][2] = height_scale_derivative(a, b, phi) * dphi * Z;
         return gradient;
       }
 
     private:
-      const double     a;
-      const double     b;
-      const ColumnTurn turn;
+      const double          a;
+      const double          b;
+      const EllipticalFront front;
+      const ColumnTurn      turn;
     };
 
     void check(const bool condition, const std::string &message)
@@ -200,7 +205,7 @@ namespace penny
     // the lattice 0 <= i, j <= m, 0 <= l <= rows), and on each shell the nodes
     // of the cube surface i = m (X patch), j = m (Y patch), l = rows (Z patch).
     // The X and Y patches meet the equator in the columns e = 0 ... 2m
-    // (phi_e = e pi/(4m)); their first `tube_rows` rows lie at fixed
+    // (front coordinates psi_e = e pi/(4m)); their first `tube_rows` rows lie at fixed
     // latitudes and hold the spider web between shells tube_inner and
     // tube_outer.
     class ReferenceOctant
@@ -212,7 +217,7 @@ namespace penny
             upper_rows(std::max(1L, std::lround(0.3 / radial_angle(m)))), rows(tube_rows + upper_rows),
             rings(front_ring_radii(p)), box({p.domain_width, p.domain_width * p.semi_axis_a / p.semi_axis_b,
                                              p.domain_height * p.semi_axis_a / scale[2]}),
-            turn(p.semi_axis_a, p.semi_axis_b)
+            front(p.semi_axis_a, p.semi_axis_b), turn(p.semi_axis_a, p.semi_axis_b)
       {
         const double angle   = radial_angle(m);
         const double inner_g = std::exp(inner_shell_aspect * angle);
@@ -349,20 +354,27 @@ namespace penny
         return p / p.norm();
       }
 
-      // Physical point of a reference point: the height scale h(phi) and the
-      // columns' turn where weight = 1 (every node of the swept cells), sqrt(a b)
-      // and no turn where it is 0 (the z-axis, the box), blended between.
+      // Physical point of a reference point at polar angle psi in the
+      // reference plane: where weight = 1 (every node of the swept cells) the
+      // parametric angle phi of front coordinate psi, the height scale h(phi)
+      // and the columns' turn; where it is 0 (the z-axis, the box) the angle
+      // psi, the height sqrt(a b) and no turn; blended between. The planes
+      // x = 0 and y = 0 map onto themselves exactly.
       Point<3> physical(const Point<3> &reference, const double weight) const
       {
         const double X = reference[0], Y = reference[1], R = std::hypot(X, Y);
-        const double phi    = std::atan2(Y, X);
+        if (X == 0 || Y == 0)
+          return {scale[0] * X, scale[1] * Y,
+                  ((1 - weight) * scale[2] + weight * (Y == 0 ? scale[0] : scale[1])) * reference[2]};
+        const double psi = std::atan2(Y, X), phi = front.parametric_angle(psi);
         const double height = (1 - weight) * scale[2] + weight * height_scale(scale[0], scale[1], phi);
-        const double angle  = R > 0 ? weight * turn(X / R, Y / R, R, reference[2]).turn : 0;
+        const double angle  = weight * (phi - psi + turn(std::cos(phi), std::sin(phi), R, reference[2]).turn);
         const double c = std::cos(angle), s = std::sin(angle);
         return {scale[0] * (c * X - s * Y), scale[1] * (s * X + c * Y), height * reference[2]};
       }
 
-      const ColumnTurn turn;
+      const EllipticalFront front;
+      const ColumnTurn      turn;
     };
 
     // Vertices by key: {0, s, i, j, l} for lattice nodes, {1, e, k, i, 0} for
@@ -399,8 +411,8 @@ namespace penny
     }
   } // namespace
 
-  // Rings of each column e = 0 ... cells_along_front (parametric angle
-  // phi_e = e pi/(2 cells_along_front)) in the reference meridian plane,
+  // Rings of each column e = 0 ... cells_along_front (front coordinate
+  // e pi/(2 cells_along_front), parametric angle phi_e) in the reference meridian plane,
   // geometric from the innermost to the tube boundary. The
   // innermost is front_cell_size x min(b, radius of curvature) in physical
   // distance (divided by h(phi_e), the chart's distance across the front per
@@ -419,7 +431,7 @@ namespace penny
     std::vector<double>   innermost(columns);
     for (unsigned int e = 0; e < columns; ++e)
       {
-        const double phi = e * M_PI / (2 * p.cells_along_front);
+        const double phi = front.parametric_angle(e * M_PI / (2 * p.cells_along_front));
         innermost[e] = p.front_cell_size * std::min(b, 1 / front.curvature(phi)) / height_scale(a, b, phi);
       }
     for (unsigned int e = 1; e < columns; ++e)

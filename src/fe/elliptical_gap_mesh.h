@@ -15,8 +15,10 @@
 // costs few cells and none is a needle. The shells' thickness follows the
 // angular cell width, but stops shrinking past 16 cells along the front, so
 // that a finer front costs cells like m^2. The equator of every shell has
-// 2m = `cells_along_front` edges at parametric angles phi_e = e pi/(4m). In
-// the meridian half-plane (r, theta) of the spherical coordinates the front is
+// 2m = `cells_along_front` edges at azimuths psi_e = e pi/(4m), which are
+// the front coordinates of the columns (EllipticalFront::front_coordinate:
+// (1 + a/b)/2 columns per column of even parametric angles at phi = 0, where
+// the front turns fastest). In the meridian half-plane (r, theta) of the spherical coordinates the front is
 // the point (1, 0); the block 0.6 <= r <= 1.4, 0 <= theta <= 0.4 of the X and
 // Y patches is replaced by a conforming spider web around that point:
 // `cells_around_front` sectors (kite cells at the front, each spanning two
@@ -27,9 +29,10 @@
 //
 // Mapping. The swept cells (the X and Y patches from the innermost sphere to
 // r = 1.4, spider web included) carry a ChartManifold, stretched spherical
-// coordinates (r, theta, phi) with turned columns:
-//   R = r cos(theta), Z = r sin(theta), psi = phi + S(phi, R, Z),
-//   x = a R cos(psi), y = b R sin(psi), z = h(phi) Z,
+// coordinates (r, theta, psi) with turned columns: phi the parametric angle
+// of front coordinate psi,
+//   R = r cos(theta), Z = r sin(theta), beta = phi + S(phi, R, Z),
+//   x = a R cos(beta), y = b R sin(beta), z = h(phi) Z,
 // h(phi) = a b/|(b cos phi, a sin phi)| the distance across the front in its
 // normal plane per unit of r, so that the web's circles are circles in the
 // front's normal plane at every phi (cells across the front are as tall as
@@ -38,9 +41,10 @@
 // degrees at b/a = 0.1), fading beyond a depth limited where the front's
 // normals cross. Refinement places new front points at r = 1, theta = 0,
 // exactly on the ellipse. Towards the z-axis (across the pole patch and the
-// core) the height scale blends into sqrt(a b) and the turn into none; those
-// cells, and the outer shells', are flat, their interior points interpolated
-// from their faces by deal.II, so refined cells stay well shaped.
+// core) the height scale blends into sqrt(a b), phi into psi and the turn
+// into none; those cells, and the outer shells', are flat, their interior
+// points interpolated from their faces by deal.II, so refined cells stay
+// well shaped.
 //
 // Rings. The innermost ring has the physical radius `front_cell_size` x
 // min(b, radius of curvature of the front) (b at phi = pi/2, b^2/a at
@@ -88,7 +92,7 @@ namespace penny
                                 const EllipticalGapMeshParameters &p);
 
   // Radii of the rings around the front in the reference meridian plane of
-  // each column e = 0 ... cells_along_front (parametric angle e pi/(2
+  // each column e = 0 ... cells_along_front (front coordinate e pi/(2
   // cells_along_front)), from the innermost to the tube boundary (0.4), the
   // same number on every column; physical distances are these times h(phi)
   // (see above).

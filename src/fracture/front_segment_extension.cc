@@ -54,25 +54,34 @@ namespace penny
     const double b = front().semi_axis_b(), a = front().semi_axis_a();
     if (!(ring_radius > 0 && ring_radius < b * b / a))
       throw std::invalid_argument("FrontSegmentExtension: the ring radius must lie in (0, b^2/a)");
+    centre_coordinate = front().front_coordinate(centre);
     // The support of f in [0, pi/2], split at the centre where k turns.
     const auto integrand = [&](const double phi) { return front_weight(phi) * front().arc_length_rate(phi); };
-    const double lo = std::max(0., centre - half_width), hi = std::min(M_PI / 2, centre + half_width);
-    using Rule = boost::math::quadrature::gauss_kronrod<double, 31>;
-    measure    = (centre > lo ? Rule::integrate(integrand, lo, centre, 15, 1e-14) : 0.) +
+    const auto [lo, hi]  = support();
+    using Rule           = boost::math::quadrature::gauss_kronrod<double, 31>;
+    measure              = (centre > lo ? Rule::integrate(integrand, lo, centre, 15, 1e-14) : 0.) +
               (hi > centre ? Rule::integrate(integrand, centre, hi, 15, 1e-14) : 0.);
   }
 
-  // The bump and its images about the symmetry planes phi = 0 and phi = pi/2.
+  // The bump in the front coordinate psi and its images about the symmetry
+  // planes psi = phi = 0 and psi = phi = pi/2.
   std::pair<double, double> FrontSegmentExtension::weight_and_slope(const double phi) const
   {
-    double f = 0, df = 0;
-    for (const auto &[image, sign] : {std::pair{phi, 1.}, std::pair{-phi, -1.}, std::pair{M_PI - phi, -1.}})
+    const double psi = front().front_coordinate(phi), rate = front().front_coordinate_rate(phi);
+    double       f = 0, df = 0;
+    for (const auto &[image, sign] : {std::pair{psi, 1.}, std::pair{-psi, -1.}, std::pair{M_PI - psi, -1.}})
       {
-        const auto [k, dk] = moment_free_bump((image - centre) / half_width);
+        const auto [k, dk] = moment_free_bump((image - centre_coordinate) / half_width);
         f += k;
-        df += sign * dk / half_width;
+        df += sign * dk / half_width * rate;
       }
     return {f, df};
+  }
+
+  std::pair<double, double> FrontSegmentExtension::support() const
+  {
+    return {front().parametric_angle(std::max(0., centre_coordinate - half_width)),
+            front().parametric_angle(std::min(M_PI / 2, centre_coordinate + half_width))};
   }
 
   double FrontSegmentExtension::front_weight(const double phi) const
@@ -119,7 +128,7 @@ namespace penny
     const Point<3> x     = cell->center();
     const double   reach = rho + cell->diameter();
     const auto     local = front().local_coordinates(x);
-    const double   lo = std::max(0., centre - half_width), hi = std::min(M_PI / 2, centre + half_width);
+    const auto [lo, hi]  = support();
     if (local.distance > reach)
       return false;
     if (local.phi >= lo && local.phi <= hi)

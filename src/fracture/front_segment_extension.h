@@ -6,20 +6,22 @@
 // with (phi, d) the parametric angle of the nearest front point and the
 // distance from it, n(phi) the in-plane normal of the front (the direction of
 // advance), w = (1 - (d/rho)^2)^4 the ring profile of the penny model across
-// the front, and f a weight along the front centred on phi_i:
+// the front, and f a weight along the front centred on phi_i, a bump in the
+// front coordinate psi (EllipticalFront::front_coordinate, in which the
+// mesh's columns are evenly spaced):
 //
-//   f(phi) = k((phi - phi_i)/h),   k(t) = (1 - t^2)^4 (1 - 10 t^2 + 17 t^4)  (|t| < 1),
+//   f(phi) = k((psi(phi) - psi_i)/h),   k(t) = (1 - t^2)^4 (1 - 10 t^2 + 17 t^4)  (|t| < 1),
 //
 // whose first four moments vanish. The domain integral then gives the
-// average of G(phi) with the weight k(phi - phi_i) |dx/dphi| over the front,
-// and that average is G(phi_i) + O(h^6): the O(h^2) bias of a positive bump
-// (several 1e-3 in G for the slicing of the meshes here) is gone, and the
-// O(h^4) one of a weight with only the second moment zero (2.4e-4 in K_I at
-// phi = 0 of b/a = 0.25 with h = pi/16; postprocess/front_weight_bias.py)
-// falls to 1.5e-5. The quarter
+// average of G with the weight k((psi - psi_i)/h) |dx/dpsi| dpsi over the
+// front, and that average is G(phi_i) + O(h^6) (the O(h^2) bias of a
+// positive bump, several 1e-3 in G for the slicing of the meshes here, is
+// gone); in psi, where G varies on a scale of order 1 even near phi = 0 of a
+// slender gap, the bias is far smaller than in phi
+// (postprocess/front_weight_bias.py). The quarter
 // model holds the front 0 <= phi <= pi/2; a weight that reaches past a
-// symmetry plane is folded back (its mirror images about phi = 0 and pi/2
-// are added), which is the weight of the whole front restricted to the
+// symmetry plane is folded back (its mirror images about psi = phi = 0 and
+// pi/2 are added), which is the weight of the whole front restricted to the
 // quarter: symmetric fields give a symmetric q, and the front measure is the
 // quarter's share, int_0^(pi/2) f(phi) |dx/dphi| dphi. At phi_i = 0 and pi/2
 // the weight is the half of a bump centred on the symmetry plane, doubled.
@@ -72,7 +74,8 @@ namespace penny
   {
   public:
     // The weight centred on the front point at parametric angle `centre`
-    // (0 <= centre <= pi/2), half-width `half_width` in phi (at most pi/2: then
+    // (0 <= centre <= pi/2), half-width `half_width` in the front coordinate psi
+    // (EllipticalFront::front_coordinate; at most pi/2: then
     // the images about the two symmetry planes are all the folding needs),
     // ring radius `ring_radius` (m), on the front of `nearest`. Throws
     // std::invalid_argument out of range.
@@ -92,12 +95,15 @@ namespace penny
   private:
     // f(phi) and df/dphi.
     std::pair<double, double> weight_and_slope(double phi) const;
+    // The parametric angles in [0, pi/2] between which f may not vanish.
+    std::pair<double, double> support() const;
     const EllipticalFront    &front() const { return nearest->front; }
 
     const std::shared_ptr<const NearestFrontPoint> nearest;
     const double                                   centre;
     const double                                   half_width;
     const double                                   rho;
+    double                                         centre_coordinate; // psi at the centre
     double                                         measure;
   };
 } // namespace penny

@@ -5,13 +5,13 @@
 
 namespace penny
 {
-  std::vector<double> front_point_angles(const unsigned int n)
+  std::vector<double> front_point_angles(const unsigned int n, const EllipticalFront &front)
   {
     if (n < 2)
       throw std::invalid_argument("front_point_angles: at least the two ends phi = 0 and pi/2");
     std::vector<double> angles(n);
     for (unsigned int i = 0; i < n; ++i)
-      angles[i] = i + 1 == n ? M_PI / 2 : i * M_PI / (2 * (n - 1));
+      angles[i] = front.parametric_angle(i + 1 == n ? M_PI / 2 : i * M_PI / (2 * (n - 1)));
     return angles;
   }
 

@@ -12,8 +12,11 @@
 
 namespace penny
 {
-  // n points 0 = phi_0 < ... < phi_(n-1) = pi/2, evenly spaced in the parametric angle.
-  std::vector<double> front_point_angles(unsigned int n);
+  // The parametric angles 0 = phi_0 < ... < phi_(n-1) = pi/2 of n points
+  // evenly spaced in the front coordinate psi of `front`, as the mesh's
+  // columns are: each point is a front vertex when n - 1 divides the cells
+  // along the front.
+  std::vector<double> front_point_angles(unsigned int n, const EllipticalFront &front);
 
   class FrontStressIntensity
   {

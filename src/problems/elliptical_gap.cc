@@ -78,7 +78,8 @@ namespace penny
                      "the last: about 5 % more CG iterations).");
       entries.integer(
           "Cells along front", mesh.cells_along_front, 16u, 2u, 256u,
-          "Edges of the quarter front 0 <= phi <= pi/2, evenly spaced in the parametric angle phi; even. "
+          "Edges of the quarter front 0 <= phi <= pi/2, evenly spaced in the front coordinate (phi + "
+          "alpha)/2, alpha the angle of the front's normal: finer where the front turns fastest; even. "
           "Units: none.");
       entries.require(mesh.cells_along_front % 2 == 0, "Cells along front", mesh.cells_along_front,
                       "{2, 4, 6, ..., 256}");
@@ -122,9 +123,11 @@ namespace penny
                      "Uniform normal traction opening the gap faces. Units: Pa.");
       entries.require(gap.pressure != 0, "Pressure p", gap.pressure,
                       "|p| in [1e-30, 1e30] Pa: a zero load opens nothing");
-      entries.integer("Front points", gap.front_points, 17u, 2u, 1000u,
-                      "K_I is reported at phi = i pi/(2 (n - 1)), i = 0 ... n - 1, one domain integral "
-                      "each. Units: none.");
+      entries.integer(
+          "Front points", gap.front_points, 17u, 2u, 1000u,
+          "K_I is reported at n points from phi = 0 to pi/2 evenly spaced in the front coordinate "
+          "(phi + alpha)/2 (alpha the normal's angle), as the mesh's front cells are (on their "
+          "vertices when n - 1 divides Cells along front), one domain integral each. Units: none.");
     });
   }
 
@@ -152,7 +155,7 @@ namespace penny
     const DisplacementVector           u        = model.solve(pressure);
 
     EllipticalGapMeasurement solved;
-    solved.angles     = front_point_angles(gap.front_points);
+    solved.angles     = front_point_angles(gap.front_points, model.front());
     solved.ring_radii = settings.ring_radii;
     {
       TimerOutput::Scope scope(timer, "J-integral");

@@ -180,8 +180,10 @@ namespace penny
 
         EllipticalSummitsResults solved;
         solved.tension_aspect_ratios = tension_aspect_ratios;
-        solved.angles                = front_point_angles(front_points);
-        solved.fe_models             = 0;
+        // The family's gaps differ in b/a: one set of points for all, evenly
+        // spaced in phi (the circle's front coordinate).
+        solved.angles    = front_point_angles(front_points, EllipticalFront(1, 1));
+        solved.fe_models = 0;
         {
           // First, as it takes milliseconds: a summit the closed form cannot answer stops the scene here.
           TimerOutput::Scope scope(timer, "closed form");
