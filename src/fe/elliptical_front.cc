@@ -44,6 +44,16 @@ namespace penny
     return a * b / std::pow(arc_length_rate(phi), 3);
   }
 
+  double EllipticalFront::tangent_distance(const double phi) const
+  {
+    return a * b / arc_length_rate(phi);
+  }
+
+  double EllipticalFront::tangent_distance_rate(const double phi) const
+  {
+    return -(a * a - b * b) * std::sin(phi) * std::cos(phi) * curvature(phi);
+  }
+
   double EllipticalFront::front_coordinate(const double phi) const
   {
     return (phi + std::atan2(a * std::sin(phi), b * std::cos(phi))) / 2;

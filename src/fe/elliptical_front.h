@@ -28,6 +28,12 @@ namespace penny
     double arc_length_rate(double phi) const;
     // Curvature a b/|dx/dphi|^3; its largest value, a/b^2, is at phi = 0.
     double curvature(double phi) const;
+    // a b/|dx/dphi|: the distance from the centre to the tangent at phi (a at
+    // phi = 0, b at pi/2), also the step across the front per unit of the
+    // stretched radius (a R cos phi, b R sin phi).
+    double tangent_distance(double phi) const;
+    // Its derivative in phi, -(a^2 - b^2) sin phi cos phi a b/|dx/dphi|^3.
+    double tangent_distance_rate(double phi) const;
     // The front coordinate psi = (phi + alpha)/2, the mean of the parametric
     // angle and the angle alpha of the normal (tan alpha = (a/b) tan phi), in
     // which the mesh's columns and the weights along the front are evenly

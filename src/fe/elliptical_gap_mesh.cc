@@ -35,20 +35,6 @@ namespace penny
     }
     constexpr double innermost_sphere = 0.35;
 
-    // The height scale of the chart at parametric angle phi: the distance
-    // across the front in its normal plane per unit of r, a b/|(b cos, a sin)|
-    // (a at phi = 0, b at pi/2), so that the web's cells are isotropic there.
-    double height_scale(const double a, const double b, const double phi)
-    {
-      return a * b / std::hypot(b * std::cos(phi), a * std::sin(phi));
-    }
-
-    double height_scale_derivative(const double a, const double b, const double phi)
-    {
-      return -a * b * (a * a - b * b) * std::sin(phi) * std::cos(phi) /
-             std::pow(std::hypot(b * std::cos(phi), a * std::sin(phi)), 3);
-    }
-
     // The columns' turn towards the front's normal. The stretched plane's
     // radial line through the front point at parametric angle phi leans on
     // the front: its step per unit of R, (a cos, b sin), has the component h
@@ -112,7 +98,7 @@ namespace penny
     // evenly spaced) of the parametric angle phi, with turned columns:
     // R = r cos(theta), Z = r sin(theta), beta = phi + S(phi, R, Z),
     // x = a R cos(beta), y = b R sin(beta), z = h(phi) Z,
-    // h the height scale. The front is r = 1, theta = 0.
+    // h = EllipticalFront::tangent_distance. The front is r = 1, theta = 0.
     class EllipticalFrontChart : public ChartManifold<3>
     {
     public:
@@ -129,7 +115,7 @@ namespace penny
       Point<3> pull_back(const Point<3> &x) const override
       {
         const double X = x[0] / a, Y = x[1] / b, R = std::hypot(X, Y), beta = std::atan2(Y, X);
-        const auto   height = [&](const double phi) { return x[2] / height_scale(a, b, phi); };
+        const auto   height = [&](const double phi) { return x[2] / front.tangent_distance(phi); };
         double       lower = beta - M_PI / 2, upper = beta + M_PI / 2, phi = beta;
         for (unsigned int iteration = 0; iteration < 100; ++iteration)
           {
@@ -151,7 +137,7 @@ namespace penny
         const double R = chart[0] * std::cos(chart[1]), Z = chart[0] * std::sin(chart[1]);
         const double phi  = front.parametric_angle(chart[2]);
         const double beta = phi + turn(std::cos(phi), std::sin(phi), R, Z).turn;
-        return {a * R * std::cos(beta), b * R * std::sin(beta), height_scale(a, b, phi) * Z};
+        return {a * R * std::cos(beta), b * R * std::sin(beta), front.tangent_distance(phi) * Z};
       }
 
       DerivativeForm<1, 3, 3> push_forward_gradient(const Point<3> &chart) const override
@@ -170,9 +156,9 @@ namespace penny
                 value.d_radius * dR[j] + value.d_height * dZ[j] + (j == 2 ? (1 + value.d_phi) * dphi : 0);
             gradient[0][j] = a * (cb * dR[j] - R * sb * dbeta);
             gradient[1][j] = b * (sb * dR[j] + R * cb * dbeta);
-            gradient[2][j] = height_scale(a, b, phi) * dZ[j];
+            gradient[2][j] = front.tangent_distance(phi) * dZ[j];
           }
-        gradient[2][2] = height_scale_derivative(a, b, phi) * dphi * Z;
+        gradient[2][2] = front.tangent_distance_rate(phi) * dphi * Z;
         return gradient;
       }
 
@@ -367,7 +353,7 @@ namespace penny
           return {scale[0] * X, scale[1] * Y,
                   ((1 - weight) * scale[2] + weight * (Y == 0 ? scale[0] : scale[1])) * reference[2]};
         const double psi = std::atan2(Y, X), phi = front.parametric_angle(psi);
-        const double height = (1 - weight) * scale[2] + weight * height_scale(scale[0], scale[1], phi);
+        const double height = (1 - weight) * scale[2] + weight * front.tangent_distance(phi);
         const double angle  = weight * (phi - psi + turn(std::cos(phi), std::sin(phi), R, reference[2]).turn);
         const double c = std::cos(angle), s = std::sin(angle);
         return {scale[0] * (c * X - s * Y), scale[1] * (s * X + c * Y), height * reference[2]};
@@ -432,7 +418,8 @@ namespace penny
     for (unsigned int e = 0; e < columns; ++e)
       {
         const double phi = front.parametric_angle(e * M_PI / (2 * p.cells_along_front));
-        innermost[e] = p.front_cell_size * std::min(b, 1 / front.curvature(phi)) / height_scale(a, b, phi);
+        innermost[e] =
+            p.front_cell_size * std::min(b, 1 / front.curvature(phi)) / front.tangent_distance(phi);
       }
     for (unsigned int e = 1; e < columns; ++e)
       innermost[e] = std::min(innermost[e], p.ring_ratio * innermost[e - 1]);
