@@ -1,5 +1,7 @@
 #include "fe/matrix_free_elasticity.h"
 
+#include "fe/elastic_diagonal.h"
+
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
@@ -72,7 +74,7 @@ namespace penny
       void compute_inverse_diagonal(Vector &inverse) const
       {
         initialize_dof_vector(inverse);
-        MatrixFreeTools::compute_diagonal(matrix_free, inverse, &ElasticOperator::integrate, this);
+        add_elastic_diagonal(matrix_free, elasticity, inverse);
         for (const unsigned int i : matrix_free.get_constrained_dofs())
           inverse.local_element(i) = 1;
         // A mapped cell turned inside out at a quadrature point (det J < 0)

@@ -37,7 +37,9 @@ namespace penny
                               front.unit_normal(phi),
                               front.unit_tangent(phi),
                               front.arc_length_rate(phi),
-                              front.curvature(phi)};
+                              front.curvature(phi),
+                              front.front_coordinate(phi),
+                              front.front_coordinate_rate(phi)};
       }
     return last_frame;
   }
@@ -55,20 +57,21 @@ namespace penny
     if (!(ring_radius > 0 && ring_radius < b * b / a))
       throw std::invalid_argument("FrontSegmentExtension: the ring radius must lie in (0, b^2/a)");
     centre_coordinate = front().front_coordinate(centre);
+    support_begin     = front().parametric_angle(std::max(0., centre_coordinate - half_width));
+    support_end       = front().parametric_angle(std::min(M_PI / 2, centre_coordinate + half_width));
     // The support of f in [0, pi/2], split at the centre where k turns.
     const auto integrand = [&](const double phi) { return front_weight(phi) * front().arc_length_rate(phi); };
-    const auto [lo, hi]  = support();
-    using Rule           = boost::math::quadrature::gauss_kronrod<double, 31>;
-    measure              = (centre > lo ? Rule::integrate(integrand, lo, centre, 15, 1e-14) : 0.) +
+    const double lo = support_begin, hi = support_end;
+    using Rule = boost::math::quadrature::gauss_kronrod<double, 31>;
+    measure    = (centre > lo ? Rule::integrate(integrand, lo, centre, 15, 1e-14) : 0.) +
               (hi > centre ? Rule::integrate(integrand, centre, hi, 15, 1e-14) : 0.);
   }
 
   // The bump in the front coordinate psi and its images about the symmetry
   // planes psi = phi = 0 and psi = phi = pi/2.
-  std::pair<double, double> FrontSegmentExtension::weight_and_slope(const double phi) const
+  std::pair<double, double> FrontSegmentExtension::weight_and_slope(const double psi, const double rate) const
   {
-    const double psi = front().front_coordinate(phi), rate = front().front_coordinate_rate(phi);
-    double       f = 0, df = 0;
+    double f = 0, df = 0;
     for (const auto &[image, sign] : {std::pair{psi, 1.}, std::pair{-psi, -1.}, std::pair{M_PI - psi, -1.}})
       {
         const auto [k, dk] = moment_free_bump((image - centre_coordinate) / half_width);
@@ -78,15 +81,9 @@ namespace penny
     return {f, df};
   }
 
-  std::pair<double, double> FrontSegmentExtension::support() const
-  {
-    return {front().parametric_angle(std::max(0., centre_coordinate - half_width)),
-            front().parametric_angle(std::min(M_PI / 2, centre_coordinate + half_width))};
-  }
-
   double FrontSegmentExtension::front_weight(const double phi) const
   {
-    return weight_and_slope(phi).first;
+    return weight_and_slope(front().front_coordinate(phi), front().front_coordinate_rate(phi)).first;
   }
 
   Tensor<1, 3> FrontSegmentExtension::value(const Point<3> &x) const
@@ -95,7 +92,7 @@ namespace penny
     const double      s     = 1 - (frame.local.distance / rho) * (frame.local.distance / rho);
     if (s <= 0)
       return {};
-    const double f = weight_and_slope(frame.local.phi).first;
+    const double f = weight_and_slope(frame.psi, frame.psi_rate).first;
     return f * s * s * s * s * frame.normal;
   }
 
@@ -109,7 +106,7 @@ namespace penny
     const double      s     = 1 - (local.distance / rho) * (local.distance / rho);
     if (s <= 0)
       return {};
-    const auto [f, df] = weight_and_slope(local.phi);
+    const auto [f, df] = weight_and_slope(frame.psi, frame.psi_rate);
     if (f == 0 && df == 0)
       return {};
     const double       w = s * s * s * s;
@@ -128,12 +125,12 @@ namespace penny
     const Point<3> x     = cell->center();
     const double   reach = rho + cell->diameter();
     const auto     local = front().local_coordinates(x);
-    const auto [lo, hi]  = support();
     if (local.distance > reach)
       return false;
-    if (local.phi >= lo && local.phi <= hi)
+    if (local.phi >= support_begin && local.phi <= support_end)
       return true;
-    return std::min(x.distance(front().point(lo)), x.distance(front().point(hi))) <= reach;
+    return std::min(x.distance(front().point(support_begin)), x.distance(front().point(support_end))) <=
+           reach;
   }
 
   // The distance d from the front is 1-Lipschitz: over a box of half-diagonal

@@ -49,6 +49,8 @@ namespace penny
     dealii::Tensor<1, 3>         tangent;
     double                       speed; // |dx/dphi|
     double                       curvature;
+    double                       psi;      // the front coordinate
+    double                       psi_rate; // d psi/d phi
   };
 
   // The front frame of the last point asked for. The domain integral asks
@@ -93,10 +95,8 @@ namespace penny
     double front_weight(double phi) const;
 
   private:
-    // f(phi) and df/dphi.
-    std::pair<double, double> weight_and_slope(double phi) const;
-    // The parametric angles in [0, pi/2] between which f may not vanish.
-    std::pair<double, double> support() const;
+    // f and df/dphi at front coordinate psi, d psi/d phi = psi_rate.
+    std::pair<double, double> weight_and_slope(double psi, double psi_rate) const;
     const EllipticalFront    &front() const { return nearest->front; }
 
     const std::shared_ptr<const NearestFrontPoint> nearest;
@@ -104,6 +104,9 @@ namespace penny
     const double                                   half_width;
     const double                                   rho;
     double                                         centre_coordinate; // psi at the centre
-    double                                         measure;
+    // The parametric angles in [0, pi/2] between which f may not vanish.
+    double support_begin;
+    double support_end;
+    double measure;
   };
 } // namespace penny

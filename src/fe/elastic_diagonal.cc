@@ -1,0 +1,109 @@
+#include "fe/elastic_diagonal.h"
+
+#include <deal.II/matrix_free/fe_evaluation.h>
+
+#include <array>
+#include <stdexcept>
+#include <vector>
+
+namespace penny
+{
+  using namespace dealii;
+
+  void add_elastic_diagonal(const MatrixFree<3, double> &matrix_free, const IsotropicElasticity &elasticity,
+                            LinearAlgebra::distributed::Vector<double> &diagonal)
+  {
+    // The constraint pool holds the weights of each kind of tie (a fixed
+    // DoF's kind has none); deal.II resolves hanging nodes of FE_Q without it.
+    bool tied = matrix_free.get_dof_handler().get_triangulation().has_hanging_nodes();
+    for (unsigned int i = 0; i < matrix_free.n_constraint_pool_entries(); ++i)
+      tied = tied || matrix_free.constraint_pool_begin(i) != matrix_free.constraint_pool_end(i);
+    if (tied)
+      throw std::logic_error("add_elastic_diagonal: DoFs tied to others (hanging nodes); the diagonal "
+                             "is not the sum of the cells'");
+    using Number = VectorizedArray<double>;
+    FEEvaluation<3, -1, 0, 3, double> phi(matrix_free);
+    const auto                       &shape = matrix_free.get_shape_info().data[0];
+    const unsigned int n = shape.fe_degree + 1, nq = shape.n_q_points_1d, n_points = nq * nq * nq;
+    const unsigned int per_component = n * n * n;
+
+    // The 1D factors [kind][i nq + q], kind = how many of the two gradient
+    // directions a, b are this direction: f^2, f f', f'^2.
+    std::array<std::vector<double>, 3> factor;
+    for (auto &f : factor)
+      f.resize(n * nq);
+    for (unsigned int iq = 0; iq < n * nq; ++iq)
+      {
+        const double f = shape.shape_values[iq][0], df = shape.shape_gradients[iq][0];
+        factor[0][iq] = f * f;
+        factor[1][iq] = f * df;
+        factor[2][iq] = df * df;
+      }
+
+    std::vector<Tensor<2, 3, Number>> M(n_points);
+    std::vector<Number>               JxW(n_points), B(n_points), along_z(nq * nq * n), along_y(nq * n * n);
+    for (unsigned int cell = 0; cell < matrix_free.n_cell_batches(); ++cell)
+      {
+        phi.reinit(cell);
+        for (unsigned int q = 0; q < n_points; ++q)
+          {
+            M[q]   = phi.inverse_jacobian(q);
+            JxW[q] = phi.JxW(q);
+          }
+        Number *const values = phi.begin_dof_values();
+        for (unsigned int c = 0; c < 3; ++c)
+          {
+            Number *const d = values + c * per_component;
+            for (unsigned int i = 0; i < per_component; ++i)
+              d[i] = 0;
+            // The symmetric B: the entries a <= b, those off the diagonal twice.
+            for (unsigned int a = 0; a < 3; ++a)
+              for (unsigned int b = a; b < 3; ++b)
+                {
+                  for (unsigned int q = 0; q < n_points; ++q)
+                    {
+                      Number column_product = 0;
+                      for (unsigned int k = 0; k < 3; ++k)
+                        column_product += M[q][k][a] * M[q][k][b];
+                      B[q] = (a == b ? 1. : 2.) * JxW[q] *
+                             (elasticity.mu * column_product +
+                              (elasticity.lambda + elasticity.mu) * M[q][c][a] * M[q][c][b]);
+                    }
+                  const std::vector<double> &fx = factor[(a == 0) + (b == 0)],
+                                            &fy = factor[(a == 1) + (b == 1)],
+                                            &fz = factor[(a == 2) + (b == 2)];
+                  // Points q = qx + nq (qy + nq qz); DoFs i + n (j + n k).
+                  for (unsigned int k = 0; k < n; ++k)
+                    for (unsigned int qy = 0; qy < nq; ++qy)
+                      for (unsigned int qx = 0; qx < nq; ++qx)
+                        {
+                          Number sum = 0;
+                          for (unsigned int qz = 0; qz < nq; ++qz)
+                            sum += B[qx + nq * (qy + nq * qz)] * fz[k * nq + qz];
+                          along_z[qx + nq * (qy + nq * k)] = sum;
+                        }
+                  for (unsigned int k = 0; k < n; ++k)
+                    for (unsigned int j = 0; j < n; ++j)
+                      for (unsigned int qx = 0; qx < nq; ++qx)
+                        {
+                          Number sum = 0;
+                          for (unsigned int qy = 0; qy < nq; ++qy)
+                            sum += along_z[qx + nq * (qy + nq * k)] * fy[j * nq + qy];
+                          along_y[qx + nq * (j + n * k)] = sum;
+                        }
+                  for (unsigned int k = 0; k < n; ++k)
+                    for (unsigned int j = 0; j < n; ++j)
+                      for (unsigned int i = 0; i < n; ++i)
+                        {
+                          Number sum = 0;
+                          for (unsigned int qx = 0; qx < nq; ++qx)
+                            sum += along_y[qx + nq * (j + n * k)] * fx[i * nq + qx];
+                          d[i + n * (j + n * k)] += sum;
+                        }
+                }
+          }
+        phi.distribute_local_to_global(diagonal);
+      }
+    diagonal.compress(VectorOperation::add);
+  }
+} // namespace penny
