@@ -1,6 +1,6 @@
 // The elastic operator's diagonal by sum factorisation (add_elastic_diagonal)
 // against deal.II's MatrixFreeTools::compute_diagonal, which applies the
-// cell operator to every unit vector: on the curved cells of a small
+// operator's cell kernel to every unit vector: on the curved cells of a small
 // elliptical-gap mesh with the 3D model's zero displacements, degrees 1 to
 // 4, on 1 and 2 ranks. And the refusal of hanging nodes.
 #define BOOST_TEST_MODULE elastic_diagonal
@@ -8,6 +8,7 @@
 #include "fe/boundary_ids.h"
 #include "fe/elastic_diagonal.h"
 #include "fe/elliptical_gap_mesh.h"
+#include "test_support.h"
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/distributed/tria.h>
@@ -66,34 +67,6 @@ namespace
 
   constexpr IsotropicElasticity elasticity{1.2, 0.7};
 
-  // sigma(u):e(v) on one cell, as the matrix-free operator evaluates it.
-  void integrate(FEEvaluation<3, -1, 0, 3, double> &phi)
-  {
-    phi.evaluate(EvaluationFlags::gradients);
-    for (const unsigned int q : phi.quadrature_point_indices())
-      {
-        const auto e = phi.get_symmetric_gradient(q);
-        phi.submit_symmetric_gradient(2 * elasticity.mu * e +
-                                          elasticity.lambda * trace(e) *
-                                              unit_symmetric_tensor<3, VectorizedArray<double>>(),
-                                      q);
-      }
-    phi.integrate(EvaluationFlags::gradients);
-  }
-
-  EllipticalGapMeshParameters small_mesh()
-  {
-    EllipticalGapMeshParameters p;
-    p.semi_axis_a        = 2;
-    p.semi_axis_b        = 0.5;
-    p.domain_width       = 6;
-    p.domain_height      = 5;
-    p.cells_along_front  = 4;
-    p.cells_around_front = 8;
-    p.front_cell_size    = 0.025;
-    p.ring_ratio         = 2;
-    return p;
-  }
 } // namespace
 
 // Every unconstrained entry within 1e-12 of the largest, at degrees 1 to 4
@@ -101,7 +74,7 @@ namespace
 BOOST_AUTO_TEST_CASE(equals_the_diagonal_by_unit_vectors)
 {
   parallel::distributed::Triangulation<3> triangulation(MPI_COMM_WORLD);
-  make_elliptical_gap_mesh(triangulation, small_mesh());
+  make_elliptical_gap_mesh(triangulation, small_elliptical_mesh(0.25));
   for (const unsigned int p : {1u, 2u, 3u, 4u})
     BOOST_TEST_CONTEXT("degree " << p)
     {
@@ -111,7 +84,8 @@ BOOST_AUTO_TEST_CASE(equals_the_diagonal_by_unit_vectors)
       discretisation.matrix_free.initialize_dof_vector(reference);
       add_elastic_diagonal(discretisation.matrix_free, elasticity, fast);
       MatrixFreeTools::compute_diagonal<3, -1, 0, 3, double, VectorizedArray<double>>(
-          discretisation.matrix_free, reference, &integrate);
+          discretisation.matrix_free, reference,
+          [](ElasticEvaluation &phi) { integrate_elastic_cell(phi, elasticity); });
       for (const unsigned int i : discretisation.matrix_free.get_constrained_dofs())
         fast.local_element(i) = reference.local_element(i) = 0;
       BOOST_TEST(reference.linfty_norm() > 0);

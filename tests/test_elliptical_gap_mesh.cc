@@ -8,6 +8,7 @@
 #include "closed_forms/elliptical_crack.h"
 #include "fe/boundary_ids.h"
 #include "fe/elliptical_gap_mesh.h"
+#include "test_support.h"
 
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/distributed/tria.h>
@@ -28,21 +29,6 @@ using namespace dealii;
 
 namespace
 {
-  // A small mesh: 4 cells along the front, 8 sectors, 4 rings.
-  EllipticalGapMeshParameters small_mesh(const double b_over_a)
-  {
-    EllipticalGapMeshParameters p;
-    p.semi_axis_a        = 2;
-    p.semi_axis_b        = 2 * b_over_a;
-    p.domain_width       = 6;
-    p.domain_height      = 5;
-    p.cells_along_front  = 4;
-    p.cells_around_front = 8;
-    p.front_cell_size    = 0.025;
-    p.ring_ratio         = 2;
-    return p;
-  }
-
   double ellipse_residual(const Point<3> &x, const EllipticalGapMeshParameters &p)
   {
     return std::abs(std::pow(x[0] / p.semi_axis_a, 2) + std::pow(x[1] / p.semi_axis_b, 2) - 1);
@@ -167,7 +153,7 @@ BOOST_AUTO_TEST_CASE(front_stays_on_the_ellipse_under_refinement)
 {
   for (const double b_over_a : {1., 0.5, 0.25})
     {
-      const EllipticalGapMeshParameters p = small_mesh(b_over_a);
+      const EllipticalGapMeshParameters p = small_elliptical_mesh(b_over_a);
       Triangulation<3>                  triangulation;
       make_elliptical_gap_mesh(triangulation, p);
       for (unsigned int refinement = 0; refinement <= 2; ++refinement)
@@ -184,7 +170,7 @@ BOOST_AUTO_TEST_CASE(positive_jacobians_and_box_volume)
 {
   for (const double b_over_a : {1., 0.5, 0.25})
     {
-      const EllipticalGapMeshParameters p = small_mesh(b_over_a);
+      const EllipticalGapMeshParameters p = small_elliptical_mesh(b_over_a);
       const double     box = std::pow(p.domain_width * p.semi_axis_a, 2) * p.domain_height * p.semi_axis_a;
       Triangulation<3> triangulation;
       make_elliptical_gap_mesh(triangulation, p);
@@ -207,7 +193,7 @@ BOOST_AUTO_TEST_CASE(boundary_ids_on_their_planes)
 {
   for (const double b_over_a : {1., 0.25})
     {
-      const EllipticalGapMeshParameters p = small_mesh(b_over_a);
+      const EllipticalGapMeshParameters p = small_elliptical_mesh(b_over_a);
       Triangulation<3>                  triangulation;
       make_elliptical_gap_mesh(triangulation, p);
       check_boundary_ids(triangulation, p);
@@ -224,7 +210,7 @@ BOOST_AUTO_TEST_CASE(columns_normal_to_the_front)
 {
   for (const double b_over_a : {0.5, 0.25, 0.1})
     {
-      const EllipticalGapMeshParameters p = small_mesh(b_over_a);
+      const EllipticalGapMeshParameters p = small_elliptical_mesh(b_over_a);
       const EllipticalFront             front(p.semi_axis_a, p.semi_axis_b);
       Triangulation<3>                  triangulation;
       make_elliptical_gap_mesh(triangulation, p);
@@ -264,7 +250,7 @@ BOOST_AUTO_TEST_CASE(front_chart_is_consistent)
 {
   for (const double b_over_a : {1., 0.5, 0.1, 0.02})
     {
-      const EllipticalGapMeshParameters p = small_mesh(b_over_a);
+      const EllipticalGapMeshParameters p = small_elliptical_mesh(b_over_a);
       Triangulation<3>                  triangulation;
       make_elliptical_gap_mesh(triangulation, p);
       const auto &chart =
@@ -295,7 +281,7 @@ BOOST_AUTO_TEST_CASE(front_chart_is_consistent)
 // in all, the box volume, the front complete on every rank.
 BOOST_AUTO_TEST_CASE(distributed_triangulation)
 {
-  const EllipticalGapMeshParameters p = small_mesh(0.5);
+  const EllipticalGapMeshParameters p = small_elliptical_mesh(0.5);
   Triangulation<3>                  serial;
   make_elliptical_gap_mesh(serial, p);
   parallel::distributed::Triangulation<3> distributed(MPI_COMM_WORLD);
@@ -386,11 +372,11 @@ BOOST_AUTO_TEST_CASE(geometric_rings)
 
 BOOST_AUTO_TEST_CASE(bad_parameters_are_rejected)
 {
-  EllipticalGapMeshParameters p = small_mesh(0.5);
+  EllipticalGapMeshParameters p = small_elliptical_mesh(0.5);
   p.cells_around_front          = 6;
   Triangulation<3> triangulation;
   BOOST_CHECK_THROW(make_elliptical_gap_mesh(triangulation, p), std::invalid_argument);
-  p             = small_mesh(0.5);
+  p             = small_elliptical_mesh(0.5);
   p.semi_axis_b = 3;
   BOOST_CHECK_THROW(make_elliptical_gap_mesh(triangulation, p), std::invalid_argument);
 }

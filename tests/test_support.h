@@ -2,6 +2,7 @@
 // parameter entries and at test size, and scratch folders.
 #pragma once
 
+#include "fe/elliptical_gap_mesh.h"
 #include "problems/penny_gap.h"
 #include "problems/periodic_gap.h"
 #include "scenes/scene.h"
@@ -45,6 +46,22 @@ inline penny::PeriodicGapInput default_periodic_gap()
 {
   return penny::default_values<penny::PeriodicGapInput>(
       [](penny::Sections &sections, penny::PeriodicGapInput &periodic) { periodic.sections(sections); });
+}
+
+// A small elliptical-gap mesh (a = 2): 4 cells along the front, 8 sectors,
+// 4 rings.
+inline penny::EllipticalGapMeshParameters small_elliptical_mesh(const double b_over_a)
+{
+  penny::EllipticalGapMeshParameters p;
+  p.semi_axis_a        = 2;
+  p.semi_axis_b        = 2 * b_over_a;
+  p.domain_width       = 6;
+  p.domain_height      = 5;
+  p.cells_along_front  = 4;
+  p.cells_around_front = 8;
+  p.front_cell_size    = 0.025;
+  p.ring_ratio         = 2;
+  return p;
 }
 
 // A fresh folder in the temporary directory, the same on every MPI rank,

@@ -1,7 +1,5 @@
 #include "fe/elastic_diagonal.h"
 
-#include <deal.II/matrix_free/fe_evaluation.h>
-
 #include <array>
 #include <stdexcept>
 #include <vector>
@@ -9,6 +7,44 @@
 namespace penny
 {
   using namespace dealii;
+
+  void integrate_elastic_cell(ElasticEvaluation &phi, const IsotropicElasticity &elasticity)
+  {
+    phi.evaluate(EvaluationFlags::gradients);
+    for (const unsigned int q : phi.quadrature_point_indices())
+      {
+        const auto e = phi.get_symmetric_gradient(q);
+        phi.submit_symmetric_gradient(2 * elasticity.mu * e +
+                                          elasticity.lambda * trace(e) *
+                                              unit_symmetric_tensor<3, VectorizedArray<double>>(),
+                                      q);
+      }
+    phi.integrate(EvaluationFlags::gradients);
+  }
+
+  namespace
+  {
+    using Number = VectorizedArray<double>;
+
+    // One step of sum factorisation: out = in contracted with the 1D matrix
+    // f[m nq + q] over the index of stride `stride`, for `blocks` outer
+    // blocks (of nq such indices in `in`, of n in `out`); added to `out` if
+    // `add`.
+    void contract(const Number *in, const std::vector<double> &f, Number *out, const unsigned int n,
+                  const unsigned int nq, const unsigned int stride, const unsigned int blocks, const bool add)
+    {
+      for (unsigned int o = 0; o < blocks; ++o)
+        for (unsigned int m = 0; m < n; ++m)
+          for (unsigned int s = 0; s < stride; ++s)
+            {
+              Number sum = 0;
+              for (unsigned int q = 0; q < nq; ++q)
+                sum += in[s + stride * (q + nq * o)] * f[m * nq + q];
+              Number &target = out[s + stride * (m + n * o)];
+              target         = add ? target + sum : sum;
+            }
+    }
+  } // namespace
 
   void add_elastic_diagonal(const MatrixFree<3, double> &matrix_free, const IsotropicElasticity &elasticity,
                             LinearAlgebra::distributed::Vector<double> &diagonal)
@@ -21,9 +57,8 @@ namespace penny
     if (tied)
       throw std::logic_error("add_elastic_diagonal: DoFs tied to others (hanging nodes); the diagonal "
                              "is not the sum of the cells'");
-    using Number = VectorizedArray<double>;
-    FEEvaluation<3, -1, 0, 3, double> phi(matrix_free);
-    const auto                       &shape = matrix_free.get_shape_info().data[0];
+    ElasticEvaluation  phi(matrix_free);
+    const auto        &shape = matrix_free.get_shape_info().data[0];
     const unsigned int n = shape.fe_degree + 1, nq = shape.n_q_points_1d, n_points = nq * nq * nq;
     const unsigned int per_component = n * n * n;
 
@@ -72,34 +107,11 @@ namespace penny
                   const std::vector<double> &fx = factor[(a == 0) + (b == 0)],
                                             &fy = factor[(a == 1) + (b == 1)],
                                             &fz = factor[(a == 2) + (b == 2)];
-                  // Points q = qx + nq (qy + nq qz); DoFs i + n (j + n k).
-                  for (unsigned int k = 0; k < n; ++k)
-                    for (unsigned int qy = 0; qy < nq; ++qy)
-                      for (unsigned int qx = 0; qx < nq; ++qx)
-                        {
-                          Number sum = 0;
-                          for (unsigned int qz = 0; qz < nq; ++qz)
-                            sum += B[qx + nq * (qy + nq * qz)] * fz[k * nq + qz];
-                          along_z[qx + nq * (qy + nq * k)] = sum;
-                        }
-                  for (unsigned int k = 0; k < n; ++k)
-                    for (unsigned int j = 0; j < n; ++j)
-                      for (unsigned int qx = 0; qx < nq; ++qx)
-                        {
-                          Number sum = 0;
-                          for (unsigned int qy = 0; qy < nq; ++qy)
-                            sum += along_z[qx + nq * (qy + nq * k)] * fy[j * nq + qy];
-                          along_y[qx + nq * (j + n * k)] = sum;
-                        }
-                  for (unsigned int k = 0; k < n; ++k)
-                    for (unsigned int j = 0; j < n; ++j)
-                      for (unsigned int i = 0; i < n; ++i)
-                        {
-                          Number sum = 0;
-                          for (unsigned int qx = 0; qx < nq; ++qx)
-                            sum += along_y[qx + nq * (j + n * k)] * fx[i * nq + qx];
-                          d[i + n * (j + n * k)] += sum;
-                        }
+                  // Points q = qx + nq (qy + nq qz); DoFs i + n (j + n k):
+                  // qz -> k, qy -> j, qx -> i.
+                  contract(B.data(), fz, along_z.data(), n, nq, nq * nq, 1, false);
+                  contract(along_z.data(), fy, along_y.data(), n, nq, nq, n, false);
+                  contract(along_y.data(), fx, d, n, nq, 1, n * n, true);
                 }
           }
         phi.distribute_local_to_global(diagonal);

@@ -20,10 +20,20 @@
 #include "fe/elasticity.h"
 
 #include <deal.II/lac/la_parallel_vector.h>
+#include <deal.II/matrix_free/fe_evaluation.h>
 #include <deal.II/matrix_free/matrix_free.h>
 
 namespace penny
 {
+  // The cell evaluation of one FESystem of FE_Q (three components), its
+  // degree and points known at run time (deal.II's precompiled kernels).
+  using ElasticEvaluation = dealii::FEEvaluation<3, -1, 0, 3, double>;
+
+  // The cell's sigma(u) : e(v) from the values in `phi`, integrated back
+  // into it: the matrix-free operator's cell kernel, whose diagonal
+  // add_elastic_diagonal computes.
+  void integrate_elastic_cell(ElasticEvaluation &phi, const IsotropicElasticity &elasticity);
+
   // Adds the diagonal of a(u, v) over the cells of `matrix_free` (one
   // FESystem of FE_Q, three components) into `diagonal`, which
   // MatrixFree::initialize_dof_vector made; constrained entries are left as

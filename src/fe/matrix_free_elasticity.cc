@@ -34,7 +34,7 @@ namespace penny
     using Vector = LinearAlgebra::distributed::Vector<double>;
     // The degree is a run-time value: deal.II dispatches to its precompiled
     // kernels of degrees 1 to 6 (and p + 2 points), a generic one above.
-    using Evaluation = FEEvaluation<3, -1, 0, 3, double>;
+    using Evaluation = ElasticEvaluation;
 
     // A(u) on one degree's DoFHandler, the identity on constrained entries.
     class ElasticOperator : public Subscriptor
@@ -111,20 +111,7 @@ namespace penny
       }
 
     private:
-      // The cell's sigma(u) : e(v) from the values in `phi`, integrated back into it.
-      void integrate(Evaluation &phi) const
-      {
-        phi.evaluate(EvaluationFlags::gradients);
-        for (const unsigned int q : phi.quadrature_point_indices())
-          {
-            const auto e = phi.get_symmetric_gradient(q);
-            phi.submit_symmetric_gradient(2 * elasticity.mu * e +
-                                              elasticity.lambda * trace(e) *
-                                                  unit_symmetric_tensor<3, VectorizedArray<double>>(),
-                                          q);
-          }
-        phi.integrate(EvaluationFlags::gradients);
-      }
+      void integrate(Evaluation &phi) const { integrate_elastic_cell(phi, elasticity); }
 
       void apply_on_cells(const MatrixFree<3, double> &, Vector &dst, const Vector &src,
                           const std::pair<unsigned int, unsigned int> &cells) const
