@@ -2,12 +2,15 @@
 """The verification report: runs the verifying scenes and writes the evidence.
 
     /usr/bin/python3 postprocess/verification_report.py BUILD OUT [-np N] [--prms DIR] [--rerun]
-                     [--readme FILE] [NAME ...]
+                     [--documents FILE ...] [NAME ...]
 
 Runs every parameter file of DIR (default prms/, the shipped full size) whose
-scene has a verdict (a Verification subsection), or the files NAME.prm named,
+scene has a verdict (a Verification subsection) and those that the blocks of
+the --documents name (below), or the files NAME.prm named,
 each under `mpirun -np N` when N > 1, in OUT/runs/NAME/ (relative output
-folders land there). It writes OUT/report.md and OUT/report.html: the
+folders land there). A NAME benchmark_X runs postprocess/benchmark_X.sh
+BUILD OUT/runs/benchmark_X/results instead, with its own ranks and sizes:
+its tables are for the documents, its verdict its exit status. It writes OUT/report.md and OUT/report.html: the
 commit, the machine and its load, and per run the verdict (PASS, FAIL or
 error) with the scene's own line on what it compared, its error and
 tolerance, the wall time and peak memory, and its figures: those of
@@ -19,14 +22,27 @@ same commit, parameter file and ranks is not run again unless --rerun. A
 progress line before each run gives the time spent and an estimate of the
 time left (from earlier records of the same run where there are any).
 
-With --readme FILE, the table of the paper's claims also replaces the block
-between the lines README_BEGIN and README_END of FILE (README.md carries
-one), with the report's commit, date and size and the verifying parameter
-files it did not run.
+With --documents FILE ..., the report also rewrites the generated blocks of
+those Markdown files (README.md and the pages of doc/ carry them), so that
+the numbers in the documents are the report's. A block is the text between
+a line `<!-- report: WHAT -->` and the next line `<!-- report: end -->`;
+WHAT is
+    claims             the table of the paper's claims, with the report's
+                       commit, date and size and the verifying parameter
+                       files it did not run;
+    runs NAME ...      the verdict, comparison, error, tolerance, wall time,
+                       peak memory, ranks and commit of those runs;
+    file NAME PATH     the file PATH of run NAME's results folder (a table
+                       the scene wrote): a .csv as a table, a .md as it is,
+                       anything else verbatim in a code block.
+A block whose runs are not all in this report is kept as it is (each block
+names the commit it came from) and listed on the screen. The files after
+--documents run up to the next option: name the runs before it.
 
 Exit status: 0 if every run passed and its figures were drawn, 1 if any
 failed, stopped with an error or lost a figure, 2 for bad arguments."""
 import argparse
+import csv
 import fcntl
 import hashlib
 import html
@@ -101,7 +117,8 @@ def read_arguments():
     parser.add_argument("-np", dest="ranks", type=int, default=1, help="MPI ranks of each run (default 1)")
     parser.add_argument("--prms", type=pathlib.Path, default=REPOSITORY / "prms", help="where the parameter files are")
     parser.add_argument("--rerun", action="store_true", help="run again what already has a record")
-    parser.add_argument("--readme", type=pathlib.Path, help="a file whose report block gets the claims table")
+    parser.add_argument("--documents", type=pathlib.Path, nargs="+", default=[],
+                        help="Markdown files whose generated blocks the report rewrites")
     arguments = parser.parse_intermixed_args()
     arguments.penny = (arguments.build / "penny").resolve()
     if not os.access(arguments.penny, os.X_OK):
@@ -112,22 +129,41 @@ def read_arguments():
         parser.error(f"--prms {arguments.prms} is not a folder")
     if arguments.out.exists() and not arguments.out.is_dir():
         parser.error(f"the report folder {arguments.out} exists and is not a folder")
-    if arguments.readme and not (arguments.readme.is_file() and readme_block(arguments.readme.read_text())):
-        parser.error(f"--readme {arguments.readme} is not a file with the lines {README_BEGIN!r} and {README_END!r}")
+    for document in arguments.documents:
+        try:
+            generated_blocks(document.read_text())
+        except (OSError, ValueError) as error:  # UnicodeDecodeError is a ValueError
+            parser.error(f"--documents {document}: {error}")
     return arguments
 
 
-README_BEGIN = "<!-- verification report: begin -->"
-README_END = "<!-- verification report: end -->"
+BLOCK_START = re.compile(r"^<!-- report: (.*?) -->\n", re.MULTILINE)
+BLOCK_END = "<!-- report: end -->"
 
 
-def readme_block(text):
-    """The span of the text between README_BEGIN and README_END, or None."""
-    begin, end = text.find(README_BEGIN + "\n"), text.find(README_END)
-    return (begin + len(README_BEGIN) + 1, end) if 0 <= begin < end else None
+def generated_blocks(text):
+    """The generated blocks of a Markdown text: (WHAT as words, start, stop) with text[start:stop] the block's
+    body; ValueError for a block that is not closed or does not say what it holds."""
+    blocks, position = [], 0
+    while (start := BLOCK_START.search(text, position)):
+        what = start.group(1).split()
+        if what == ["end"]:
+            raise ValueError(f"'{BLOCK_END}' without its start (line {text.count(chr(10), 0, start.start()) + 1})")
+        stop = text.find("\n" + BLOCK_END, start.end() - 1)
+        if stop < 0:
+            raise ValueError(f"the block '{start.group(0).strip()}' has no line '{BLOCK_END}'")
+        valid = (what == ["claims"] or (len(what) >= 2 and what[0] == "runs")
+                 or (len(what) == 3 and what[0] == "file"))
+        if not valid:
+            raise ValueError(f"'{start.group(0).strip()}': WHAT is 'claims', 'runs NAME ...' or 'file NAME PATH'")
+        blocks.append((what, start.end(), stop + 1))
+        position = stop + 1 + len(BLOCK_END)
+    return blocks
 
 
 def scene_of(prm):
+    if prm.suffix == ".sh":
+        return "benchmark"
     match = re.search(r"^\s*set\s+Scene\s*=\s*(\S+)", prm.read_text(), re.MULTILINE)
     return match.group(1) if match else "penny-gap"
 
@@ -140,13 +176,16 @@ def has_verdict(penny, scene, cache={}):
 
 
 def selected_files(arguments):
-    if arguments.names:
-        files = [arguments.prms / (name if name.endswith(".prm") else name + ".prm") for name in arguments.names]
-        missing = [str(f) for f in files if not f.is_file()]
-        if missing:
-            refuse(f"no parameter file {', '.join(missing)}")
-        return files
-    return verifying_files(arguments)
+    """The named parameter files, or every verifying one and those the documents' blocks name."""
+    names = arguments.names or [f.stem for f in verifying_files(arguments)] + sorted(
+        {name for document in arguments.documents for what, _, _ in generated_blocks(document.read_text())
+         if what[0] != "claims" for name in (what[1:] if what[0] == "runs" else what[1:2])})
+    files = [BENCHMARKS / f"{name}.sh" if name.startswith("benchmark_") else
+             arguments.prms / (name if name.endswith(".prm") else name + ".prm") for name in dict.fromkeys(names)]
+    missing = [str(f) for f in files if not f.is_file()]
+    if missing:
+        refuse(f"no parameter file {', '.join(missing)}")
+    return files
 
 
 def verifying_files(arguments):
@@ -178,12 +217,20 @@ def load_average():
     return " ".join(f"{x:.2f}" for x in os.getloadavg())
 
 
+# The benchmark scripts the report runs by name (postprocess/benchmark_NAME.sh BUILD OUT), with their own
+# ranks and sizes, for the tables of the documents; their verdict is their exit status.
+BENCHMARKS = REPOSITORY / "postprocess"
+
+
 def run(arguments, prm, key, folder):
-    """Runs one parameter file in its folder; its record."""
+    """Runs one parameter file or benchmark script in its folder; its record."""
     folder.mkdir(parents=True, exist_ok=True)
-    command = [str(arguments.penny), str(prm.resolve())]
-    if arguments.ranks > 1:
-        command = ["mpirun", "-np", str(arguments.ranks)] + command
+    if prm.suffix == ".sh":
+        command = [str(prm), str(arguments.build.resolve()), str((folder / "results").resolve())]
+    else:
+        command = [str(arguments.penny), str(prm.resolve())]
+        if arguments.ranks > 1:
+            command = ["mpirun", "-np", str(arguments.ranks)] + command
     environment = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     load_before, start = load_average(), time.time()
     with open(folder / "stdout.txt", "w") as stdout, open(folder / "stderr.txt", "w") as stderr:
@@ -203,11 +250,12 @@ def run(arguments, prm, key, folder):
         last = [line for line in errors.splitlines() if line.strip()]
         verdict, message = "ERROR", (last[-1] if last else f"exit status {code}")
     results = re.search(r"^Results in (\S+?)/?:", output, re.MULTILINE)
+    results = "results" if prm.suffix == ".sh" else results.group(1) if results else None
     # The figures, from a run that finished; a script that fails is reported.
     figure_errors = []
     if code == 0 and results:
         with open(folder / "figures.txt", "w") as log:
-            for command in figure_commands(scene_of(prm), folder / results.group(1)):
+            for command in figure_commands(scene_of(prm), folder / results):
                 # Xvfb now and then gives pvpython no window (tests/check_paraview.sh): three tries.
                 for _ in range(3 if command[0] == "xvfb-run" else 1):
                     drawn = subprocess.run(command, cwd=folder, stdout=log, stderr=subprocess.STDOUT, timeout=1800)
@@ -218,8 +266,8 @@ def run(arguments, prm, key, folder):
                     figure_errors.append(f"{pathlib.Path(script).name} exit {drawn.returncode}")
     return {"key": key, "scene": scene_of(prm), "verdict": verdict, "message": message, "exit": code,
             "wall time (s)": round(wall, 2), "peak memory (MB)": round(usage.ru_maxrss / 1024),
-            "ranks": arguments.ranks, "load average before": load_before, "load average after": load_average(),
-            "results": results.group(1) if results else None, "figure errors": figure_errors,
+            "ranks": "its own" if prm.suffix == ".sh" else arguments.ranks, "load average before": load_before, "load average after": load_average(),
+            "results": results, "figure errors": figure_errors,
             "date": time.strftime("%Y-%m-%d %H:%M:%S")}
 
 
@@ -242,6 +290,11 @@ def numbers_in(message):
     return (match.group(1), match.group(3)) if match else ("", "")
 
 
+def markdown_table(columns, table):
+    lines = ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
+    return "\n".join(lines + ["| " + " | ".join(c.replace("|", "\\|") for c in row) + " |" for row in table])
+
+
 def write_report(arguments, records, header):
     rows, claims = [], []
     for name, folder, record in records:
@@ -256,10 +309,6 @@ def write_report(arguments, records, header):
     claim_columns = ["the paper's claim", "derived in", "run", "verdict", "error", "tolerance"]
     run_columns = ["run", "scene", "verdict", "what was compared", "error", "tolerance", "wall time (s)",
                    "peak memory (MB)", "ranks", "load average at start", "finished"]
-
-    def markdown_table(columns, table):
-        lines = ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
-        return "\n".join(lines + ["| " + " | ".join(c.replace("|", "\\|") for c in row) + " |" for row in table])
 
     def html_table(columns, table):
         head = "".join(f"<th>{html.escape(c)}</th>" for c in columns)
@@ -285,24 +334,68 @@ def write_report(arguments, records, header):
             "<h2>Every run</h2>", html_table(run_columns, rows)]
     page += ["<h2>Figures</h2>"] + [f"<p>{html.escape(n)}<br><img src='{html.escape(f)}'></p>" for n, f in pictures]
     write_whole(arguments.out / "report.html", "\n".join(page) + "</body></html>\n")
-    if arguments.readme:
-        write_readme_block(arguments, header, summary, markdown_table(claim_columns, claims),
-                           {name for name, _, _ in records})
+    if arguments.documents:
+        write_documents(arguments, header, summary, markdown_table(claim_columns, claims), records)
     return passed == len(rows)
 
 
-def write_readme_block(arguments, header, summary, claims_table, names):
+def write_documents(arguments, header, summary, claims_table, records):
+    """Rewrites the generated blocks of the documents from this report's records."""
     prms = arguments.prms.resolve()
     where = prms.relative_to(REPOSITORY) if prms.is_relative_to(REPOSITORY) else prms
-    block = [f"From the verification report of commit {header['commit']} (started {header['started']}; "
-             f"{header['machine']}; parameter files in {where}/, {arguments.ranks} rank(s) each): {summary}", "",
-             claims_table, ""]
-    others = sorted(f.stem for f in verifying_files(arguments) if f.stem not in names)
-    if others:
-        block += [f"Verifying parameter files that report did not run: {', '.join(others)}.", ""]
-    text = arguments.readme.read_text()
-    start, stop = readme_block(text)
-    write_whole(arguments.readme, text[:start] + "\n".join(block) + text[stop:])
+    by_name = {name: (folder, record) for name, folder, record in records}
+    source = f"commit {header['commit']}, {arguments.ranks} rank(s) per run"
+
+    def claims():
+        block = [f"From the verification report of commit {header['commit']} (started {header['started']}; "
+                 f"{header['machine']}; parameter files in {where}/, {arguments.ranks} rank(s) each): {summary}", "",
+                 claims_table, ""]
+        others = sorted(f.stem for f in verifying_files(arguments) if f.stem not in by_name)
+        if others:
+            block += [f"Verifying parameter files that report did not run: {', '.join(others)}.", ""]
+        return block
+
+    def runs(names):
+        columns = ["run", "verdict", "what was compared", "error", "tolerance", "wall time (s)",
+                   "peak memory (MB)", "ranks"]
+        table = []
+        for name in names:
+            record = by_name[name][1]
+            error, tolerance = numbers_in(record["message"])
+            table.append([name, record["verdict"], record["message"], error, tolerance,
+                          f"{record['wall time (s)']:.1f}", str(record["peak memory (MB)"]), str(record["ranks"])])
+        return [f"From the verification report ({source}, {header['started']}):", "",
+                markdown_table(columns, table), ""]
+
+    def file(name, path):
+        folder, record = by_name[name]
+        table = folder / (record["results"] or ".") / path
+        if not table.is_file():
+            return None
+        text = table.read_text().rstrip("\n")
+        rows = list(csv.reader(text.splitlines()))
+        if table.suffix == ".csv" and rows:
+            body = [markdown_table(rows[0], rows[1:])]
+        else:
+            body = [text] if table.suffix == ".md" else ["```", text, "```"]
+        return [f"`{path}` of run {name}, from the verification report ({source}, {header['started']}):", "",
+                *body, ""]
+
+    for document in arguments.documents:
+        text = document.read_text()
+        pieces, position = [], 0
+        for what, start, stop in generated_blocks(text):
+            names = what[1:] if what[0] == "runs" else what[1:2]
+            missing = [n for n in names if n not in by_name]
+            lines = None if missing else claims() if what[0] == "claims" else runs(names) if what[0] == "runs" \
+                else file(*what[1:])
+            if lines is None:
+                reason = f"not in this report: {', '.join(missing)}" if missing else "the run wrote no such file"
+                print(f"{document}: kept the block '{' '.join(what)}' ({reason})")
+                continue
+            pieces += [text[position:start], "\n".join(lines) + "\n"]
+            position = stop
+        write_whole(document, "".join(pieces) + text[position:])
 
 
 def main():

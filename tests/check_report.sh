@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Usage: check_report.sh BUILD_DIR REPORT_SCRIPT SCENES_DIR
 # The verification report at test size: two scenes pass and are reported,
-# a second call resumes from their records and writes the claims table into
-# a README's block (--readme), a check broken on purpose (a
+# a second call resumes from their records and rewrites a document's
+# generated blocks (--documents), a check broken on purpose (a
 # tolerance no discretisation meets) is reported as FAIL with exit status 1,
 # and a bad argument exits 2.
 set -u
@@ -19,18 +19,31 @@ grep -q "| adhesionless gap c/a = sqrt(3/2) | doc/theory.md section 1 | gap-size
 grep -q "<td class=\"PASS\">PASS</td>" "$work/good/report.html" || fail "report.html lacks a PASS cell"
 grep -q "^- commit: $(git -C "$(dirname "$report")" rev-parse --short=10 HEAD)" "$work/good/report.md" ||
   fail "report.md does not name the commit of the build's sources"
-printf 'top\n<!-- verification report: begin -->\nold table\n<!-- verification report: end -->\nbottom\n' > "$work/README.md"
-run "$work/good" --prms "$scenes" --readme "$work/README.md" gap-size-adhesionless penny-gap ||
+# The documents' generated blocks: claims, a run's row, a file of its results; a block of a run not in
+# the report is kept; a block not closed, or not saying what it holds, is refused.
+printf 'top\n<!-- report: claims -->\nold table\n<!-- report: end -->\nmiddle\n<!-- report: runs penny-gap -->\nold row\n<!-- report: end -->\n<!-- report: file gap-size-adhesionless gap-size.csv -->\nold file\n<!-- report: end -->\n<!-- report: runs jkr-sphere -->\nkept\n<!-- report: end -->\nbottom\n' > "$work/README.md"
+run "$work/good" --prms "$scenes" gap-size-adhesionless penny-gap --documents "$work/README.md" ||
   fail "exit status $? when resuming"
 [ "$(grep -c '(recorded ' "$work/log")" = 2 ] || fail "a second call ran recorded scenes again"
 grep -q "^| adhesionless gap c/a = sqrt(3/2) | doc/theory.md section 1 | gap-size-adhesionless | PASS |" \
-  "$work/README.md" || fail "--readme did not write the claims table"
-grep -q "old table" "$work/README.md" && fail "--readme kept the old block"
-grep -q "did not run: .*jkr-sphere" "$work/README.md" || fail "--readme does not list the files not run"
-[ "$(head -1 "$work/README.md")$(tail -1 "$work/README.md")" = topbottom ] || fail "--readme changed the rest"
-echo "no block" > "$work/plain.md"
-run "$work/good" --prms "$scenes" --readme "$work/plain.md" penny-gap
-[ $? = 2 ] || fail "--readme on a file without the block did not exit 2"
+  "$work/README.md" || fail "--documents did not write the claims table"
+grep -q "^| penny-gap | PASS | " "$work/README.md" || fail "--documents did not write the run's row"
+grep -A3 "^<!-- report: file gap-size-adhesionless gap-size.csv -->" "$work/README.md" | grep -q '^`gap-size.csv`.*' ||
+  fail "--documents did not write the file block"
+sed -n '/file gap-size-adhesionless/,/report: end/p' "$work/README.md" | grep -q "^|---|" ||
+  fail "--documents did not write gap-size.csv as a table"
+grep -q "old" "$work/README.md" && fail "--documents kept an old block"
+grep -q "^kept$" "$work/README.md" || fail "--documents rewrote the block of a run not in the report"
+grep -q "kept the block 'runs jkr-sphere' (not in this report: jkr-sphere)" "$work/log" ||
+  fail "--documents does not say which block it kept"
+grep -q "did not run: .*jkr-sphere" "$work/README.md" || fail "--documents does not list the files not run"
+[ "$(head -1 "$work/README.md")$(tail -1 "$work/README.md")" = topbottom ] || fail "--documents changed the rest"
+grep -q "^middle$" "$work/README.md" || fail "--documents changed the text between blocks"
+for broken in $'<!-- report: claims -->\nnever closed' $'<!-- report: everything -->\n<!-- report: end -->'; do
+  printf '%s\n' "$broken" > "$work/plain.md"
+  run "$work/good" --prms "$scenes" penny-gap --documents "$work/plain.md"
+  [ $? = 2 ] || fail "--documents on '$broken' did not exit 2"
+done
 
 mkdir "$work/broken"
 sed 's/^\( *set Tolerance *=\).*/\1 1e-12/' "$scenes/gap-size-adhesionless.prm" > "$work/broken/gap-size-adhesionless.prm"
