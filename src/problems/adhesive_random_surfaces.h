@@ -1,5 +1,5 @@
 // Adhesive contact of sampled random surfaces near full contact, set against
-// the paper's adhesive claims (doc/contact-notes.md, section 8): the
+// the paper's adhesive claims (doc/contact-notes.md, section 6a): the
 // non-contact area of one realisation of a power-law surface at several
 // loads, by the adhesive boundary-element solver at several cohesive zones
 // (for the extrapolation to the JKR limit), beside the adhesionless solver at
