@@ -10,8 +10,8 @@ the --documents name (below), or the files NAME.prm named,
 each under `mpirun -np N` when N > 1, in OUT/runs/NAME/ (relative output
 folders land there). A NAME benchmark_X runs postprocess/benchmark_X.sh
 BUILD OUT/runs/benchmark_X/results instead, with its own ranks and sizes:
-its tables are for the documents, its verdict its exit status. It writes OUT/report.md and OUT/report.html: the
-commit, the machine and its load, and per run the verdict (PASS, FAIL or
+its tables are for the documents, its verdict its exit status. It writes
+OUT/report.md and OUT/report.html: the commit, the machine and its load, and per run the verdict (PASS, FAIL or
 error) with the scene's own line on what it compared, its error and
 tolerance, the wall time and peak memory, and its figures: those of
 postprocess/plot_<scene>.py and, for the scenes with fields, the ParaView
@@ -31,7 +31,7 @@ WHAT is
                        commit, date and size and the verifying parameter
                        files it did not run;
     runs NAME ...      the verdict, comparison, error, tolerance, wall time,
-                       peak memory, ranks and commit of those runs;
+                       peak memory and ranks of those runs, with the commit;
     file NAME PATH     the file PATH of run NAME's results folder (a table
                        the scene wrote): a .csv as a table, a .md as it is,
                        anything else verbatim in a code block.
@@ -56,6 +56,8 @@ import sys
 import time
 
 REPOSITORY = pathlib.Path(__file__).resolve().parent.parent
+# Where the benchmark scripts are that the report runs by name (benchmark_X.sh BUILD OUT).
+BENCHMARKS = REPOSITORY / "postprocess"
 
 # The paper's closed forms and assumptions, by the scene that checks them,
 # with the section of doc/theory.md that derives the comparison. Scenes not
@@ -141,6 +143,11 @@ BLOCK_START = re.compile(r"^<!-- report: (.*?) -->\n", re.MULTILINE)
 BLOCK_END = "<!-- report: end -->"
 
 
+def runs_named(what):
+    """The runs a block's WHAT names."""
+    return what[1:] if what[0] == "runs" else what[1:2]
+
+
 def generated_blocks(text):
     """The generated blocks of a Markdown text: (WHAT as words, start, stop) with text[start:stop] the block's
     body; ValueError for a block that is not closed or does not say what it holds."""
@@ -156,6 +163,9 @@ def generated_blocks(text):
                  or (len(what) == 3 and what[0] == "file"))
         if not valid:
             raise ValueError(f"'{start.group(0).strip()}': WHAT is 'claims', 'runs NAME ...' or 'file NAME PATH'")
+        if any("/" in name for name in runs_named(what)) or (
+                what[0] == "file" and (what[2].startswith("/") or ".." in what[2].split("/"))):
+            raise ValueError(f"'{start.group(0).strip()}': NAME is a run's name, PATH a file in its results folder")
         blocks.append((what, start.end(), stop + 1))
         position = stop + 1 + len(BLOCK_END)
     return blocks
@@ -179,12 +189,12 @@ def selected_files(arguments):
     """The named parameter files, or every verifying one and those the documents' blocks name."""
     names = arguments.names or [f.stem for f in verifying_files(arguments)] + sorted(
         {name for document in arguments.documents for what, _, _ in generated_blocks(document.read_text())
-         if what[0] != "claims" for name in (what[1:] if what[0] == "runs" else what[1:2])})
+         for name in runs_named(what)})
     files = [BENCHMARKS / f"{name}.sh" if name.startswith("benchmark_") else
              arguments.prms / (name if name.endswith(".prm") else name + ".prm") for name in dict.fromkeys(names)]
     missing = [str(f) for f in files if not f.is_file()]
     if missing:
-        refuse(f"no parameter file {', '.join(missing)}")
+        refuse(f"no parameter file or benchmark script {', '.join(missing)}")
     return files
 
 
@@ -215,11 +225,6 @@ def machine():
 
 def load_average():
     return " ".join(f"{x:.2f}" for x in os.getloadavg())
-
-
-# The benchmark scripts the report runs by name (postprocess/benchmark_NAME.sh BUILD OUT), with their own
-# ranks and sizes, for the tables of the documents; their verdict is their exit status.
-BENCHMARKS = REPOSITORY / "postprocess"
 
 
 def run(arguments, prm, key, folder):
@@ -266,8 +271,8 @@ def run(arguments, prm, key, folder):
                     figure_errors.append(f"{pathlib.Path(script).name} exit {drawn.returncode}")
     return {"key": key, "scene": scene_of(prm), "verdict": verdict, "message": message, "exit": code,
             "wall time (s)": round(wall, 2), "peak memory (MB)": round(usage.ru_maxrss / 1024),
-            "ranks": "its own" if prm.suffix == ".sh" else arguments.ranks, "load average before": load_before, "load average after": load_average(),
-            "results": results, "figure errors": figure_errors,
+            "ranks": "its own" if prm.suffix == ".sh" else arguments.ranks, "load average before": load_before,
+            "load average after": load_average(), "results": results, "figure errors": figure_errors,
             "date": time.strftime("%Y-%m-%d %H:%M:%S")}
 
 
@@ -385,9 +390,8 @@ def write_documents(arguments, header, summary, claims_table, records):
         text = document.read_text()
         pieces, position = [], 0
         for what, start, stop in generated_blocks(text):
-            names = what[1:] if what[0] == "runs" else what[1:2]
-            missing = [n for n in names if n not in by_name]
-            lines = None if missing else claims() if what[0] == "claims" else runs(names) if what[0] == "runs" \
+            missing = [n for n in runs_named(what) if n not in by_name]
+            lines = None if missing else claims() if what[0] == "claims" else runs(what[1:]) if what[0] == "runs" \
                 else file(*what[1:])
             if lines is None:
                 reason = f"not in this report: {', '.join(missing)}" if missing else "the run wrote no such file"
@@ -414,7 +418,7 @@ def main():
     header = {"commit": revision, "machine": machine(), "load average at start": load_average(),
               "parameter files": str(arguments.prms), "ranks per run": arguments.ranks,
               "started": time.strftime("%Y-%m-%d %H:%M:%S")}
-    records, spent = [], 0.0
+    records, spent, ran = [], 0.0, 0
     for index, prm in enumerate(files):
         name, folder = prm.stem, arguments.out / "runs" / prm.stem
         key = {"commit": revision, "parameters": hashlib.sha256(prm.read_bytes()).hexdigest(),
@@ -430,15 +434,15 @@ def main():
             record = arguments.out / "runs" / later.stem / "record.json"
             expected.append(json.loads(record.read_text())["wall time (s)"] if record.is_file() else None)
         known = [t for t in expected if t is not None]
-        mean = spent / max(1, len(records)) if records else (sum(known) / len(known) if known else 0)
-        left = sum(t if t is not None else mean for t in expected)
-        print(f"[{index + 1}/{len(files)}] {name}: running ({spent:.0f} s so far, about {left:.0f} s left)",
-              flush=True)
+        mean = spent / ran if ran else sum(known) / len(known) if known else None
+        left = (f"about {sum(t if t is not None else mean for t in expected):.0f} s left" if mean is not None
+                else "the time left is known once a run has finished")
+        print(f"[{index + 1}/{len(files)}] {name}: running ({spent:.0f} s so far, {left})", flush=True)
         if folder.exists():
             for stale in ("record.json", "stdout.txt", "stderr.txt", "figures.txt"):
                 (folder / stale).unlink(missing_ok=True)
         record = run(arguments, prm, key, folder)
-        spent += record["wall time (s)"]
+        spent, ran = spent + record["wall time (s)"], ran + 1
         write_whole(folder / "record.json", json.dumps(record, indent=1) + "\n")
         print(f"    {record['verdict']}: {record['message']} ({record['wall time (s)']:.1f} s)"
               + "".join(f"; figure failed: {e}" for e in record["figure errors"]), flush=True)

@@ -39,7 +39,8 @@ grep -q "kept the block 'runs jkr-sphere' (not in this report: jkr-sphere)" "$wo
 grep -q "did not run: .*jkr-sphere" "$work/README.md" || fail "--documents does not list the files not run"
 [ "$(head -1 "$work/README.md")$(tail -1 "$work/README.md")" = topbottom ] || fail "--documents changed the rest"
 grep -q "^middle$" "$work/README.md" || fail "--documents changed the text between blocks"
-for broken in $'<!-- report: claims -->\nnever closed' $'<!-- report: everything -->\n<!-- report: end -->'; do
+for broken in $'<!-- report: claims -->\nnever closed' $'<!-- report: everything -->\n<!-- report: end -->' \
+  $'<!-- report: file penny-gap ../../secret -->\n<!-- report: end -->'; do
   printf '%s\n' "$broken" > "$work/plain.md"
   run "$work/good" --prms "$scenes" penny-gap --documents "$work/plain.md"
   [ $? = 2 ] || fail "--documents on '$broken' did not exit 2"
