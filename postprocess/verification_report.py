@@ -295,6 +295,13 @@ def numbers_in(message):
     return (match.group(1), match.group(3)) if match else ("", "")
 
 
+def short_number(cell):
+    """A table cell with a real number written to 10 significant digits (the scenes write 17)."""
+    if re.fullmatch(r"[-+]?(\d+\.\d*|\.\d+|\d+(\.\d*)?[eE][-+]?\d+)", cell.strip()):
+        return f"{float(cell):.10g}"
+    return cell
+
+
 def markdown_table(columns, table):
     lines = ["| " + " | ".join(columns) + " |", "|" + "---|" * len(columns)]
     return "\n".join(lines + ["| " + " | ".join(c.replace("|", "\\|") for c in row) + " |" for row in table])
@@ -380,7 +387,7 @@ def write_documents(arguments, header, summary, claims_table, records):
         text = table.read_text().rstrip("\n")
         rows = list(csv.reader(text.splitlines()))
         if table.suffix == ".csv" and rows:
-            body = [markdown_table(rows[0], rows[1:])]
+            body = [markdown_table(rows[0], [[short_number(cell) for cell in row] for row in rows[1:]])]
         else:
             body = [text] if table.suffix == ".md" else ["```", text, "```"]
         return [f"`{path}` of run {name}, from the verification report ({source}, {header['started']}):", "",
