@@ -12,6 +12,7 @@
 #include <deal.II/base/utilities.h>
 
 #include <algorithm>
+#include <cmath>
 #include <iostream>
 #include <sstream>
 
@@ -102,17 +103,22 @@ namespace penny
       entries.number(
           "Front weight half-width", model.weight_half_width, 2, above(0),
           "Half-width of the weight along the front of each domain integral, in front cells of the refined "
-          "mesh; up to Cells along front x 2^Global refinements. Units: front cells.");
-      entries.require(model.weight_half_width <= (mesh.cells_along_front << model.model.global_refinements),
-                      "Front weight half-width", model.weight_half_width,
-                      "(0, Cells along front x 2^Global refinements]");
+          "mesh: a whole number, so that the weight's support ends on column boundaries (inside a cell the "
+          "quadrature misses its end: errors of a few 1e-4 in K_I); up to Cells along front x 2^Global "
+          "refinements. Units: front cells.");
+      const unsigned int front_cells = mesh.cells_along_front << model.model.global_refinements;
+      entries.require(
+          model.weight_half_width == std::round(model.weight_half_width) &&
+              model.weight_half_width <= front_cells,
+          "Front weight half-width", model.weight_half_width,
+          "{1, 2, ..., Cells along front x 2^Global refinements = " + std::to_string(front_cells) + "}");
       entries.numbers("Ring radii", model.ring_radii, {0.1, 0.2, 0.4}, interval("()", 0, 1),
                       "Radii rho of the J-integral tubes around the front, q = (1 - (d/rho)^2)^4 across "
                       "it; below the smallest radius of curvature b^2/a of the front. Units: b^2/a.");
     });
   }
 
-  void elliptical_gap_section(Sections &sections, EllipticalGap &gap)
+  void elliptical_gap_section(Sections &sections, EllipticalGap &gap, const EllipticalModel &model)
   {
     sections.subsection("Elliptical gap", [&](Entries &entries) {
       entries.number("Semi-axis a", gap.semi_axis_a, 1, magnitude("m"),
@@ -127,7 +133,14 @@ namespace penny
           "Front points", gap.front_points, 17u, 2u, 1000u,
           "K_I is reported at n points from phi = 0 to pi/2 evenly spaced in the front coordinate "
           "(phi + alpha)/2 (alpha the normal's angle), as the mesh's front cells are (on their "
-          "vertices when n - 1 divides Cells along front), one domain integral each. Units: none.");
+          "vertices), one domain integral each; n - 1 must divide Cells along front x 2^Global refinements, "
+          "as a point between vertices puts its weight's ends inside cells. Units: none.");
+    });
+    sections.check([&] {
+      const unsigned int front_cells = model.model.mesh.cells_along_front << model.model.global_refinements;
+      require(front_cells % (gap.front_points - 1) == 0, "Elliptical gap/Front points", gap.front_points,
+              "n with n - 1 dividing Cells along front x 2^Global refinements = " +
+                  std::to_string(front_cells));
     });
   }
 

@@ -41,8 +41,9 @@ namespace penny
     unsigned int front_points; // K_I at phi = i pi/(2 (n - 1)), i = 0 ... n - 1
   };
 
-  // Elliptical gap.
-  void elliptical_gap_section(Sections &sections, EllipticalGap &gap);
+  // Elliptical gap; its front points must fall on the vertices of `model`'s
+  // front, so it is read after elliptical_model_sections.
+  void elliptical_gap_section(Sections &sections, EllipticalGap &gap, const EllipticalModel &model);
 
   struct EllipticalGapMeasurement
   {

@@ -92,7 +92,7 @@ namespace penny
       void inputs(Sections &sections) override
       {
         elliptical_model_sections(sections, model);
-        elliptical_gap_section(sections, gap);
+        elliptical_gap_section(sections, gap, model);
         fields_section(sections, write_fields);
       }
 

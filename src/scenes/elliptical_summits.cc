@@ -165,8 +165,10 @@ namespace penny
             "meshes). Units: none.");
         entries.integer(
             "Front points", front_points, 9u, 2u, 1000u,
-            "K_I along the front of each gap found, at phi = i pi/(2 (n - 1)), i = 0 ... n - 1. Units: "
-            "none.");
+            "K_I along the front of each gap found, at phi = i pi/(2 (n - 1)), i = 0 ... n - 1, for the "
+            "front table; the searches use phi = 0 and pi/2 only. On a gap with b/a < 1 the points between "
+            "lie between the mesh's front vertices, where the front weight's ends fall inside cells: K_I "
+            "there is good to a few 1e-4 only. Units: none.");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override

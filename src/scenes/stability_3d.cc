@@ -58,7 +58,7 @@ namespace penny
       void inputs(Sections &sections) override
       {
         elliptical_model_sections(sections, setting.model);
-        elliptical_gap_section(sections, setting.gap);
+        elliptical_gap_section(sections, setting.gap, setting.model);
       }
 
       void entries(Entries &entries) override
