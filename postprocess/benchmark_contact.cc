@@ -14,13 +14,15 @@
 // the adhesionless one (w, rho with a cohesive zone of lambda0/64, 4 grid spacings at N = 256, and a strength
 // w/rho = sqrt(V)/2).
 //
-// Under mpirun -np P the grid is split over the P ranks (FFTW's MPI
-// interface); one rank runs the serial transforms. Each solve's results
-// follow as "# result" lines (A_nc and the mean gap, all digits) for
-// comparison across rank counts (benchmark_contact.sh ranks).
+// Under mpirun -np P the grid is split over the P ranks (in shared memory
+// where they share a node, else FFTW's MPI interface: SplitTransform); one
+// rank runs the serial transforms. Each solve's results follow as "# result"
+// lines (A_nc and the mean gap, all digits) for comparison across rank
+// counts (benchmark_contact.sh ranks).
 //
-// Usage: [mpirun -np P] benchmark_contact [measure] [N ...]   (default N: 256
-// 512 1024 2048 4096; "measure": FFTW_MEASURE plans instead of FFTW_ESTIMATE)
+// Usage: [mpirun -np P] benchmark_contact [measure] [fftw-mpi] [N ...]
+// (default N: 256 512 1024 2048 4096; "measure": FFTW_MEASURE plans instead
+// of FFTW_ESTIMATE; "fftw-mpi": FFTW's MPI plans on one node too)
 #include "contact/half_space_contact.h"
 #include "statistics/random_field.h"
 #include "statistics/roughness.h"
@@ -120,10 +122,13 @@ int main(int argc, char **argv)
   try
     {
       Planning                  planning = Planning::estimate;
+      SplitTransform            how      = SplitTransform::shared_memory;
       std::vector<unsigned int> sizes;
       for (int k = 1; k < argc; ++k)
         if (std::strcmp(argv[k], "measure") == 0)
           planning = Planning::measure;
+        else if (std::strcmp(argv[k], "fftw-mpi") == 0)
+          how = SplitTransform::fftw_mpi;
         else
           sizes.push_back(std::stoul(argv[k]));
       if (sizes.empty())
@@ -132,15 +137,20 @@ int main(int argc, char **argv)
       const double               lambda0 = 1e-3, E_star = 1e7 / (1 - 0.49 * 0.49);
       const PowerSpectrum        spectrum = power_law_spectrum(0.75, 2 * M_PI / lambda0, 32, 0.01 * lambda0);
       const ContactSolverControl control{5000, 1e-8};
-      print("# FFTW planning: %s; ranks: %d; load average at the start %s\n",
-            planning == Planning::measure ? "measure" : "estimate", ranks, load_average().c_str());
+      const FourierTransform     probe(square_grid(2, lambda0), Planning::estimate, world, how);
+      print("# FFTW planning: %s; ranks: %d (grid split: %s); load average at the start %s\n",
+            planning == Planning::measure ? "measure" : "estimate", ranks,
+            !probe.split()          ? "no"
+            : probe.shares_memory() ? "in shared memory"
+                                    : "by FFTW's MPI plans",
+            load_average().c_str());
       print("# %5s | %5s %8s %9s %9s %7s %9s | %11s %8s | %5s %8s | %5s %8s %7s | %7s | %s\n", "N", "iter",
             "time(s)", "s/iter", "s/conv", "iter/c", "old res", "cold iter", "time(s)", "iter6", "time6(s)",
             "iterA", "timeA(s)", "A_nc", "MB/rank", "load average");
       for (const unsigned int n : sizes)
         {
           const PeriodicGrid     grid = square_grid(n, lambda0);
-          const FourierTransform transform(grid, planning, world);
+          const FourierTransform transform(grid, planning, world, how);
           const GridField        h = gaussian_field(transform, spectrum, realisation_seed(1, 0));
           const double           sqrt_V =
               std::sqrt(lattice_moments(grid, pressure_spectrum(spectrum, E_star)).expected.m0);

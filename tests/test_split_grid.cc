@@ -2,8 +2,9 @@
 // each rank alone: the transforms, the random fields, the moves between
 // grids of nested iteration and the contact solves with and without
 // adhesion, at prescribed mean pressure and mean gap; what needs the whole
-// field refuses a split grid. Run on 1 rank (the split transform is then the
-// serial one) and on 2.
+// field refuses a split grid. Each split both ways, in shared memory and by
+// FFTW's MPI plans. Run on 1 rank (the split transform is then the serial
+// one) and on 2.
 #define BOOST_TEST_MODULE split_grid
 #define BOOST_TEST_NO_MAIN
 #include "contact/contact_geometry.h"
@@ -14,6 +15,7 @@
 #include "statistics/roughness.h"
 #include "statistics/summit_statistics.h"
 
+#include <boost/test/data/test_case.hpp>
 #include <boost/test/unit_test.hpp>
 
 #include <algorithm>
@@ -21,8 +23,19 @@
 
 using namespace penny;
 
+namespace penny
+{
+  std::ostream &operator<<(std::ostream &out, const SplitTransform how)
+  {
+    return out << (how == SplitTransform::shared_memory ? "shared memory" : "FFTW MPI");
+  }
+} // namespace penny
+
 namespace
 {
+  const auto both_ways =
+      boost::unit_test::data::make({SplitTransform::shared_memory, SplitTransform::fftw_mpi});
+
   const MPI_Comm world = MPI_COMM_WORLD;
 
   // This rank's rows of a field on the whole grid.
@@ -83,38 +96,51 @@ namespace
   }
 } // namespace
 
-BOOST_AUTO_TEST_CASE(split_transforms_equal_serial_ones)
+BOOST_DATA_TEST_CASE(split_transforms_equal_serial_ones, both_ways, how)
 {
-  // A rectangle of unequal sides and points: convolution with a complex
-  // multiplier (d/dx), the spectrum coefficient by coefficient and the
-  // quadratic form agree to rounding (1e-12 relative; measured on 2 ranks
-  // 5e-16, 3e-16).
-  const PeriodicGrid     grid{48, 40, 2 * lambda, 1.5 * lambda};
-  const FourierTransform serial(grid), split(grid, Planning::estimate, world);
-  const GridField        h          = gaussian_field(serial, spectrum, 3);
-  const auto             multiplier = [](const Wavevector &q) { return derivative_factor(q, 1, 0); };
-  GridField              serial_slope, split_slope;
-  serial.apply(serial.tabulate(multiplier), h, serial_slope);
-  split.apply(split.tabulate(multiplier), local_rows(split, h), split_slope);
-  BOOST_TEST(largest_difference(split_slope, local_rows(split, serial_slope)) <=
-             1e-12 * std::abs(largest_value(serial_slope)));
-
-  const FourierTransform::Spectrum a = serial.forward(h), b = split.forward(local_rows(split, h));
-  double                           difference = 0, largest = 0;
-  for (std::size_t c = 0; c < b.size(); ++c)
-    {
-      const Wavevector q = split.wavevector(c);
-      const auto       s = a[((q.kx + grid.nx) % grid.nx) * (grid.ny / 2 + 1) + q.ky];
-      difference         = std::max(difference, std::abs(b[c] - s));
-      largest            = std::max(largest, std::abs(s));
-    }
-  BOOST_TEST(largest_over_ranks(difference) <= 1e-12 * largest_over_ranks(largest));
-
+  // Rectangles of unequal sides and points, two with rows or spectrum lines
+  // fewer than two ranks: convolution with a complex multiplier (d/dx), the
+  // spectrum coefficient by coefficient and the quadratic form agree to
+  // rounding (1e-12 relative; measured on 2 ranks 5e-16, 3e-16).
   const auto stiffness = [](const Wavevector &q) { return std::complex<double>(q.norm()); };
   const auto load      = [](const FourierTransform &transform, const GridField &field) {
     transform.for_each_point(
         [&](const std::size_t i, const std::size_t w) { transform.work_array()[w] = field[i]; });
   };
+  for (const PeriodicGrid grid :
+       {PeriodicGrid{48, 40, 2 * lambda, 1.5 * lambda}, PeriodicGrid{3, 8, lambda, lambda},
+        PeriodicGrid{1, 8, lambda, lambda}, PeriodicGrid{5, 1, lambda, lambda}})
+    {
+      const FourierTransform serial(grid), split(grid, Planning::estimate, world, how);
+      BOOST_TEST(split.shares_memory() == (split.split() && how == SplitTransform::shared_memory));
+      const GridField h          = gaussian_field(serial, spectrum, 3);
+      const auto      multiplier = [](const Wavevector &q) { return derivative_factor(q, 1, 0); };
+      GridField       serial_slope, split_slope;
+      serial.apply(serial.tabulate(multiplier), h, serial_slope);
+      split.apply(split.tabulate(multiplier), local_rows(split, h), split_slope);
+      BOOST_TEST(largest_difference(split_slope, local_rows(split, serial_slope)) <=
+                 1e-12 * std::abs(largest_value(serial_slope)));
+
+      const FourierTransform::Spectrum a = serial.forward(h), b = split.forward(local_rows(split, h));
+      double                           difference = 0, largest = 0;
+      for (std::size_t c = 0; c < b.size(); ++c)
+        {
+          const Wavevector q = split.wavevector(c);
+          const auto       s = a[((q.kx + grid.nx) % grid.nx) * (grid.ny / 2 + 1) + q.ky];
+          difference         = std::max(difference, std::abs(b[c] - s));
+          largest            = std::max(largest, std::abs(s));
+        }
+      BOOST_TEST(largest_over_ranks(difference) <= 1e-12 * largest_over_ranks(largest));
+      const GridField back = split.inverse(b);
+      BOOST_TEST(largest_difference(back, local_rows(split, h)) <= 1e-12 * std::abs(largest_value(h)));
+
+      load(serial, h);
+      load(split, local_rows(split, h));
+      const double expected = serial.quadratic_form_of_work_array(serial.tabulate(stiffness));
+      BOOST_TEST(split.quadratic_form_of_work_array(split.tabulate(stiffness)) == expected,
+                 boost::test_tools::tolerance(1e-12));
+    }
+
   // Parseval: with m = 1 the quadratic form is the mean square (ny even and odd).
   for (const unsigned int ny : {40u, 39u})
     {
@@ -128,20 +154,15 @@ BOOST_AUTO_TEST_CASE(split_transforms_equal_serial_ones)
                      square,
                  boost::test_tools::tolerance(1e-12));
     }
-  load(serial, h);
-  load(split, local_rows(split, h));
-  const double expected = serial.quadratic_form_of_work_array(serial.tabulate(stiffness));
-  BOOST_TEST(split.quadratic_form_of_work_array(split.tabulate(stiffness)) == expected,
-             boost::test_tools::tolerance(1e-12));
 }
 
-BOOST_AUTO_TEST_CASE(split_gaussian_field_equals_the_serial_one)
+BOOST_DATA_TEST_CASE(split_gaussian_field_equals_the_serial_one, both_ways, how)
 {
   // Each rank draws only its own coefficients; the field is the serial one
   // to 1e-12 of its largest value (measured on 2 ranks 3e-16), its moments
   // to 1e-12.
   const PeriodicGrid     grid{96, 64, 2 * lambda, 2 * lambda * 64 / 96};
-  const FourierTransform serial(grid), split(grid, Planning::estimate, world);
+  const FourierTransform serial(grid), split(grid, Planning::estimate, world, how);
   const GridField        h    = gaussian_field(serial, spectrum, realisation_seed(5, 2));
   const GridField        rows = gaussian_field(split, spectrum, realisation_seed(5, 2));
   BOOST_TEST(rows.size() == split.n_local_points());
@@ -153,7 +174,7 @@ BOOST_AUTO_TEST_CASE(split_gaussian_field_equals_the_serial_one)
   BOOST_TEST(b.m22 == a.m22, boost::test_tools::tolerance(1e-12));
 }
 
-BOOST_AUTO_TEST_CASE(split_resampling_and_interpolation_equal_serial_ones)
+BOOST_DATA_TEST_CASE(split_resampling_and_interpolation_equal_serial_ones, both_ways, how)
 {
   // Nested iteration's moves between a grid and its halved one, on grids
   // whose halved rows fall unevenly on the ranks: the spectral resampling to
@@ -163,8 +184,8 @@ BOOST_AUTO_TEST_CASE(split_resampling_and_interpolation_equal_serial_ones)
     {
       const PeriodicGrid     coarse = *halved(fine, 1);
       const FourierTransform serial_fine(fine), serial_coarse(coarse);
-      const FourierTransform split_fine(fine, Planning::estimate, world),
-          split_coarse(coarse, Planning::estimate, world);
+      const FourierTransform split_fine(fine, Planning::estimate, world, how),
+          split_coarse(coarse, Planning::estimate, world, how);
       const GridField h          = gaussian_field(serial_fine, spectrum, 9);
       const GridField down       = resampled(serial_fine, serial_coarse, h);
       const GridField split_down = resampled(split_fine, split_coarse, local_rows(split_fine, h));
@@ -180,14 +201,14 @@ BOOST_AUTO_TEST_CASE(split_resampling_and_interpolation_equal_serial_ones)
     }
 }
 
-BOOST_AUTO_TEST_CASE(split_solves_without_adhesion_equal_serial_ones)
+BOOST_DATA_TEST_CASE(split_solves_without_adhesion_equal_serial_ones, both_ways, how)
 {
   // 256^2 at 2 sqrt(V): a cold start (nested iteration on 128^2, the halved
   // grid split too) at prescribed mean pressure, and a solve at 1.2 times
   // the mean gap it found. Equal to the tolerance 1e-10 (measured on 2
   // ranks: fields 2e-15, scalars 4e-15, the same iterations).
   const PeriodicGrid     grid = square_grid(256, lambda);
-  const FourierTransform serial_transform(grid), split_transform(grid, Planning::estimate, world);
+  const FourierTransform serial_transform(grid), split_transform(grid, Planning::estimate, world, how);
   const GridField        h = gaussian_field(serial_transform, spectrum, 7);
   const HalfSpaceContact serial(serial_transform, h, E_star),
       split(split_transform, local_rows(split_transform, h), E_star);
@@ -204,14 +225,14 @@ BOOST_AUTO_TEST_CASE(split_solves_without_adhesion_equal_serial_ones)
   check_equal(split, d, c, h_rms, control.tolerance);
 }
 
-BOOST_AUTO_TEST_CASE(split_solves_with_adhesion_equal_serial_ones)
+BOOST_DATA_TEST_CASE(split_solves_with_adhesion_equal_serial_ones, both_ways, how)
 {
   // 128^2, a cohesive zone of 5 grid spacings and a strength sqrt(V)/2, from
   // the adhesionless state at 2 sqrt(V): at that mean pressure and at 1.2
   // times its mean gap. Equal to the tolerance 1e-10 (measured on 2 ranks:
   // fields 7e-16, the energy 3e-13, the same iterations).
   const PeriodicGrid     grid = square_grid(128, lambda);
-  const FourierTransform serial_transform(grid), split_transform(grid, Planning::estimate, world);
+  const FourierTransform serial_transform(grid), split_transform(grid, Planning::estimate, world, how);
   const GridField        h        = gaussian_field(serial_transform, spectrum, 11);
   const double           strength = sqrt_V(grid) / 2, zone = 5 * lambda / 128;
   const double           w = M_PI * strength * strength * zone / E_star;
@@ -233,12 +254,12 @@ BOOST_AUTO_TEST_CASE(split_solves_with_adhesion_equal_serial_ones)
   BOOST_TEST(c.iterations > 0u);
 }
 
-BOOST_AUTO_TEST_CASE(errors_reach_every_rank)
+BOOST_DATA_TEST_CASE(errors_reach_every_rank, both_ways, how)
 {
   // A failure decided on reduced quantities is thrown on every rank (else
   // this test would hang), and what needs the whole field refuses a split grid.
   const PeriodicGrid     grid = square_grid(64, lambda);
-  const FourierTransform split_transform(grid, Planning::estimate, world);
+  const FourierTransform split_transform(grid, Planning::estimate, world, how);
   const GridField        h = gaussian_field(split_transform, spectrum, 13);
   const HalfSpaceContact split(split_transform, h, E_star);
   BOOST_CHECK_THROW(split.solve(sqrt_V(grid), {2, 1e-14}), ContactSolverFailure);

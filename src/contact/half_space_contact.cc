@@ -173,8 +173,9 @@ namespace penny
     // The halved problems of nested iteration, built once for every cold start.
     if (const std::optional<PeriodicGrid> grid = halved(transform.grid(), 128); grid && !adhesion.active())
       {
-        coarse_transform =
-            std::make_unique<FourierTransform>(*grid, transform.planning(), transform.communicator());
+        coarse_transform = std::make_unique<FourierTransform>(
+            *grid, transform.planning(), transform.communicator(),
+            transform.shares_memory() ? SplitTransform::shared_memory : SplitTransform::fftw_mpi);
         coarse = std::make_unique<HalfSpaceContact>(
             *coarse_transform, resampled(transform, *coarse_transform, heights_), E_star);
       }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 #include <stdexcept>
 
 namespace penny
@@ -47,10 +48,29 @@ namespace penny
     {
       return std::upper_bound(starts.begin(), starts.end(), index) - starts.begin() - 1;
     }
+
+    // Whether every rank of the communicator runs on one node (can share memory).
+    bool on_one_node(const MPI_Comm communicator)
+    {
+      MPI_Comm node;
+      MPI_Comm_split_type(communicator, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+      int node_ranks, ranks;
+      MPI_Comm_size(node, &node_ranks);
+      MPI_Comm_size(communicator, &ranks);
+      MPI_Comm_free(&node);
+      return node_ranks == ranks;
+    }
+
+    // A plan of a rank that has nothing to transform is none.
+    void execute(void *const plan)
+    {
+      if (plan)
+        fftw_execute(static_cast<fftw_plan>(plan));
+    }
   } // namespace
 
   FourierTransform::FourierTransform(const PeriodicGrid &grid, const Planning planning,
-                                     const MPI_Comm communicator)
+                                     const MPI_Comm communicator, const SplitTransform how)
       : grid_(grid), planning_(planning), communicator_(communicator), rank_(0), first_row_(0),
         n_rows_(grid.nx), n_coefficients_(std::size_t(grid.nx) * (grid.ny / 2 + 1))
   {
@@ -60,23 +80,71 @@ namespace penny
     if (communicator != MPI_COMM_SELF)
       MPI_Comm_size(communicator, &ranks);
     // In place, rows padded to 2 (ny/2 + 1) values (about a tenth faster than
-    // out of place at 2048^2). FFTW_MEASURE overwrites the array while it
-    // plans; it holds nothing yet.
+    // out of place at 2048^2). FFTW_MEASURE overwrites the arrays while it
+    // plans; they hold nothing yet.
     const unsigned int flags   = planning == Planning::estimate ? FFTW_ESTIMATE : FFTW_MEASURE;
     const ptrdiff_t    n_lines = grid.ny / 2 + 1;
     row_stride_                = 2 * n_lines;
     if (ranks == 1)
       {
-        real_buffer    = fftw_alloc_real(2 * n_coefficients_);
-        auto *spectrum = reinterpret_cast<fftw_complex *>(real_buffer);
-        forward_plan   = fftw_plan_dft_r2c_2d(grid.nx, grid.ny, real_buffer, spectrum, flags);
-        inverse_plan   = fftw_plan_dft_c2r_2d(grid.nx, grid.ny, spectrum, real_buffer, flags);
+        real_buffer     = fftw_alloc_real(2 * n_coefficients_);
+        spectrum_buffer = reinterpret_cast<std::complex<double> *>(real_buffer);
+        auto *spectrum  = reinterpret_cast<fftw_complex *>(real_buffer);
+        forward_plan    = fftw_plan_dft_r2c_2d(grid.nx, grid.ny, real_buffer, spectrum, flags);
+        inverse_plan    = fftw_plan_dft_c2r_2d(grid.nx, grid.ny, spectrum, real_buffer, flags);
         return;
       }
-    // A slab of rows per rank; the spectrum's lines ky split over the ranks
-    // as the omitted transpose left them. FFTW's MPI planner times
-    // collectively, so FFTW_MEASURE picks one algorithm on every rank.
     MPI_Comm_rank(communicator, &rank_);
+    if (how == SplitTransform::shared_memory && on_one_node(communicator))
+      {
+        // Rows and spectrum lines in blocks as even as they go. Each rank's
+        // rows are its segment of the window, the segments contiguous in rank
+        // order: the whole grid in FFTW's in-place layout.
+        first_row_      = std::size_t(grid.nx) * rank_ / ranks;
+        n_rows_         = std::size_t(grid.nx) * (rank_ + 1) / ranks - first_row_;
+        first_line_     = std::size_t(n_lines) * rank_ / ranks;
+        const int lines = std::size_t(n_lines) * (rank_ + 1) / ranks - first_line_;
+        n_coefficients_ = std::size_t(lines) * grid.nx;
+        row_starts      = block_starts(communicator, n_rows_);
+        line_starts     = block_starts(communicator, lines);
+        MPI_Win_allocate_shared(MPI_Aint(n_rows_) * row_stride_ * sizeof(double), sizeof(double),
+                                MPI_INFO_NULL, communicator, &real_buffer, &window);
+        MPI_Win_lock_all(MPI_MODE_NOCHECK, window);
+        MPI_Aint size;
+        int      unit;
+        double  *whole_grid;
+        MPI_Win_shared_query(window, MPI_PROC_NULL, &size, &unit, &whole_grid);
+        spectrum_buffer = reinterpret_cast<std::complex<double> *>(
+            fftw_alloc_complex(std::max<std::size_t>(n_coefficients_, 1)));
+        auto     *rows           = reinterpret_cast<fftw_complex *>(real_buffer);
+        auto     *spectrum       = reinterpret_cast<fftw_complex *>(spectrum_buffer);
+        auto     *lines_in_place = reinterpret_cast<fftw_complex *>(whole_grid) + first_line_;
+        const int ny = grid.ny, nx = grid.nx;
+        // The rows' transforms along y in place; then each line ky along x,
+        // from the rows (n_lines complex values apart) into the spectrum
+        // array's line of nx (the transpose done by the transform itself).
+        forward_plan = n_rows_ == 0 ? nullptr
+                                    : fftw_plan_many_dft_r2c(1, &ny, n_rows_, real_buffer, nullptr, 1,
+                                                             row_stride_, rows, nullptr, 1, n_lines, flags);
+        inverse_plan = n_rows_ == 0 ? nullptr
+                                    : fftw_plan_many_dft_c2r(1, &ny, n_rows_, rows, nullptr, 1, n_lines,
+                                                             real_buffer, nullptr, 1, row_stride_, flags);
+        synchronise();
+        if (lines > 0)
+          {
+            forward_lines_plan = fftw_plan_many_dft(1, &nx, lines, lines_in_place, nullptr, n_lines, 1,
+                                                    spectrum, nullptr, 1, nx, FFTW_FORWARD, flags);
+            inverse_lines_plan =
+                fftw_plan_many_dft(1, &nx, lines, spectrum, nullptr, 1, nx, lines_in_place, nullptr, n_lines,
+                                   1, FFTW_BACKWARD, flags | FFTW_DESTROY_INPUT);
+          }
+        synchronise();
+        return;
+      }
+    // FFTW's MPI plans: a slab of rows per rank; the spectrum's lines ky
+    // split over the ranks as the omitted transpose left them (which saves
+    // two global transposes a convolution). FFTW's MPI planner times
+    // collectively, so FFTW_MEASURE picks one algorithm on every rank.
     static const bool initialised = (fftw_mpi_init(), true);
     (void)initialised;
     ptrdiff_t       rows, row, lines, line;
@@ -89,6 +157,7 @@ namespace penny
     row_starts      = block_starts(communicator, n_rows_);
     line_starts     = block_starts(communicator, lines);
     real_buffer     = fftw_alloc_real(2 * std::max<ptrdiff_t>(complex_size, 1));
+    spectrum_buffer = reinterpret_cast<std::complex<double> *>(real_buffer);
     auto *spectrum  = reinterpret_cast<fftw_complex *>(real_buffer);
     forward_plan    = fftw_mpi_plan_dft_r2c_2d(grid.nx, grid.ny, real_buffer, spectrum, communicator,
                                                flags | FFTW_MPI_TRANSPOSED_OUT);
@@ -98,9 +167,55 @@ namespace penny
 
   FourierTransform::~FourierTransform()
   {
-    fftw_destroy_plan(static_cast<fftw_plan>(forward_plan));
-    fftw_destroy_plan(static_cast<fftw_plan>(inverse_plan));
-    fftw_free(real_buffer);
+    for (void *plan : {forward_plan, inverse_plan, forward_lines_plan, inverse_lines_plan})
+      if (plan)
+        fftw_destroy_plan(static_cast<fftw_plan>(plan));
+    if (!shares_memory())
+      fftw_free(real_buffer);
+    else
+      {
+        fftw_free(spectrum_buffer);
+        // Freeing the window is collective: while an error unwinds, perhaps on
+        // this rank alone, it is left to the end of the run.
+        if (std::uncaught_exceptions() == 0)
+          {
+            MPI_Win_unlock_all(window);
+            MPI_Win_free(&window);
+          }
+      }
+  }
+
+  // Every rank's writes to the window seen by every rank.
+  void FourierTransform::synchronise() const
+  {
+    MPI_Win_sync(window);
+    MPI_Barrier(communicator_);
+    MPI_Win_sync(window);
+  }
+
+  // The rows' transforms, then in shared memory the lines', each rank's own;
+  // the lines read every rank's rows, so no rank changes its rows before all
+  // have read them, nor reads its rows before all have written them.
+  void FourierTransform::transform_forward() const
+  {
+    execute(forward_plan);
+    if (shares_memory())
+      {
+        synchronise();
+        execute(forward_lines_plan);
+        synchronise();
+      }
+  }
+
+  void FourierTransform::transform_inverse() const
+  {
+    if (shares_memory())
+      {
+        synchronise();
+        execute(inverse_lines_plan);
+        synchronise();
+      }
+    execute(inverse_plan);
   }
 
   int FourierTransform::n_ranks() const
@@ -136,9 +251,9 @@ namespace penny
   FourierTransform::Spectrum FourierTransform::forward(const GridField &field) const
   {
     for_each_point([&](const std::size_t i, const std::size_t w) { real_buffer[w] = field[i]; });
-    fftw_execute(static_cast<fftw_plan>(forward_plan));
+    transform_forward();
     const double scale = 1. / grid_.n_points();
-    Spectrum     coefficients(spectrum_buffer(), spectrum_buffer() + n_coefficients_);
+    Spectrum     coefficients(spectrum_buffer, spectrum_buffer + n_coefficients_);
     for (auto &c : coefficients)
       c *= scale;
     return coefficients;
@@ -146,8 +261,8 @@ namespace penny
 
   GridField FourierTransform::inverse(const Spectrum &coefficients) const
   {
-    std::copy(coefficients.begin(), coefficients.end(), spectrum_buffer());
-    fftw_execute(static_cast<fftw_plan>(inverse_plan));
+    std::copy(coefficients.begin(), coefficients.end(), spectrum_buffer);
+    transform_inverse();
     GridField field(n_local_points());
     for_each_point([&](const std::size_t i, const std::size_t w) { field[i] = real_buffer[w]; });
     return field;
@@ -172,18 +287,18 @@ namespace penny
 
   void FourierTransform::convolve_work_array(const Spectrum &multiplier) const
   {
-    fftw_execute(static_cast<fftw_plan>(forward_plan));
+    transform_forward();
     const double          scale    = 1. / grid_.n_points();
-    std::complex<double> *spectrum = spectrum_buffer();
+    std::complex<double> *spectrum = spectrum_buffer;
     for (std::size_t c = 0; c < multiplier.size(); ++c)
       spectrum[c] *= scale * multiplier[c];
-    fftw_execute(static_cast<fftw_plan>(inverse_plan));
+    transform_inverse();
   }
 
   double FourierTransform::quadratic_form_of_work_array(const Spectrum &multiplier) const
   {
-    fftw_execute(static_cast<fftw_plan>(forward_plan));
-    const std::complex<double> *spectrum = spectrum_buffer();
+    transform_forward();
+    const std::complex<double> *spectrum = spectrum_buffer;
     const auto term = [&](const std::size_t c) { return multiplier[c].real() * std::norm(spectrum[c]); };
     double     sum  = 0;
     for (std::size_t c = 0; c < multiplier.size(); ++c)

@@ -6,9 +6,9 @@
 //   h(x) = sum_q h^_q exp(i q.x),  q = 2 pi (kx/lx, ky/ly),
 // so <h^2> = sum_q |h^_q|^2.
 //
-// A grid may be split over the ranks of an MPI communicator (FFTW's MPI
-// interface): each rank then holds a slab of consecutive x rows of every
-// field, and its share of the spectrum.
+// A grid may be split over the ranks of an MPI communicator: each rank then
+// holds a slab of consecutive x rows of every field, and its share of the
+// spectrum.
 #pragma once
 
 #include <mpi.h>
@@ -70,14 +70,26 @@ namespace penny
     measure
   };
 
+  // How a grid split over several ranks is transformed. `shared_memory`: the
+  // ranks' rows lie in one MPI shared-memory window; each rank transforms its
+  // rows, then, reading every rank's rows in place, its lines of the spectrum,
+  // so no data is copied between ranks. It needs every rank on one node and
+  // is `fftw_mpi` otherwise: FFTW's MPI plans, whose global transposes move
+  // the data between ranks (and nodes). Both leave the spectrum in the same
+  // layout, with the same split.
+  enum class SplitTransform
+  {
+    shared_memory,
+    fftw_mpi
+  };
+
   // Real-to-complex FFTs (FFTW, r2c/c2r) on one grid. The spectrum holds the
   // half plane ky >= 0, nx x (ny/2 + 1) coefficients; the other half is the
   // complex conjugate (Hermitian symmetry of a real field). On one rank the
   // coefficients are in FFTW's layout (kx the slow index). On a communicator
-  // of several ranks the grid is split: fields hold the rank's rows, the
-  // transforms are FFTW's MPI plans with transposed output (each rank holds
-  // whole lines of constant ky, kx the fast index), which saves two global
-  // transposes per convolution; every Spectrum (forward, tabulate, inverse)
+  // of several ranks the grid is split (SplitTransform): fields hold the
+  // rank's rows, the spectrum is transposed (each rank holds whole lines of
+  // constant ky, kx the fast index); every Spectrum (forward, tabulate, inverse)
   // is the rank's share in that layout, and wavevector() tells what each
   // coefficient is. Plans and work arrays belong to the object: it is not
   // thread-safe, and on several ranks every member that transforms or sums
@@ -88,7 +100,8 @@ namespace penny
     using Spectrum = std::vector<std::complex<double>>;
 
     explicit FourierTransform(const PeriodicGrid &grid, Planning planning = Planning::estimate,
-                              MPI_Comm communicator = MPI_COMM_SELF);
+                              MPI_Comm       communicator = MPI_COMM_SELF,
+                              SplitTransform how          = SplitTransform::shared_memory);
     ~FourierTransform();
     FourierTransform(const FourierTransform &)            = delete;
     FourierTransform &operator=(const FourierTransform &) = delete;
@@ -96,8 +109,10 @@ namespace penny
     const PeriodicGrid &grid() const { return grid_; }
     Planning            planning() const { return planning_; }
     MPI_Comm            communicator() const { return communicator_; }
-    // Whether the grid is split over more than one rank.
+    // Whether the grid is split over more than one rank, and whether its
+    // ranks share memory (SplitTransform::shared_memory on one node).
     bool split() const { return !row_starts.empty(); }
+    bool shares_memory() const { return window != MPI_WIN_NULL; }
 
     // This rank's rows, x indices first_row() ... first_row() + n_rows() - 1
     // (all of them on one rank; possibly none on a split grid).
@@ -181,14 +196,20 @@ namespace penny
     std::vector<unsigned int> row_starts, line_starts;
     unsigned int              first_line_ = 0;
     std::size_t               n_coefficients_, row_stride_;
-    // The one FFTW array: the field in place of its spectrum.
+    // The work array of this rank's rows, and the spectrum: transformed in
+    // place of the rows on one rank and by FFTW's MPI plans, into an array of
+    // its own in shared memory.
     double               *real_buffer;
-    std::complex<double> *spectrum_buffer() const
-    {
-      return reinterpret_cast<std::complex<double> *>(real_buffer);
-    }
-    void *forward_plan;
-    void *inverse_plan;
+    std::complex<double> *spectrum_buffer;
+    // The plans between them; in shared memory those of the rows' transforms
+    // along y and of this rank's lines along x, and the window of all ranks'
+    // rows, which the lines' transforms read and write in place.
+    void   *forward_plan, *inverse_plan;
+    void   *forward_lines_plan = nullptr, *inverse_lines_plan = nullptr;
+    MPI_Win window = MPI_WIN_NULL;
+    void    synchronise() const;
+    void    transform_forward() const;
+    void    transform_inverse() const;
   };
 
   // The Fourier factor of d^(ox + oy)/dx^ox dy^oy, (i qx)^ox (i qy)^oy, zero
