@@ -106,7 +106,7 @@ namespace penny
           "mesh: a whole number, so that the weight's support ends on column boundaries (inside a cell the "
           "quadrature misses its end: errors of a few 1e-4 in K_I); up to Cells along front x 2^Global "
           "refinements. Units: front cells.");
-      const unsigned int front_cells = mesh.cells_along_front << model.model.global_refinements;
+      const unsigned int front_cells = model.front_cells();
       entries.require(
           model.weight_half_width == std::round(model.weight_half_width) &&
               model.weight_half_width <= front_cells,
@@ -137,7 +137,7 @@ namespace penny
           "as a point between vertices puts its weight's ends inside cells. Units: none.");
     });
     sections.check([&] {
-      const unsigned int front_cells = model.model.mesh.cells_along_front << model.model.global_refinements;
+      const unsigned int front_cells = model.front_cells();
       require(front_cells % (gap.front_points - 1) == 0, "Elliptical gap/Front points", gap.front_points,
               "n with n - 1 dividing Cells along front x 2^Global refinements = " +
                   std::to_string(front_cells));

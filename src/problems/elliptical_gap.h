@@ -27,6 +27,8 @@ namespace penny
 
     // The model of the gap with semi-axes a and b (m).
     EllipticalGapModelParameters with_semi_axes(double a, double b) const;
+    // The cells along the front of the refined mesh.
+    unsigned int front_cells() const { return model.mesh.cells_along_front << model.global_refinements; }
   };
 
   // Material, Elliptical model, Finite element and Linear solver.

@@ -148,8 +148,8 @@ namespace penny
                          mesh.cells_around_front,
                          "{8, 16, 24, ..., 64} for this scene (its coarse model halves it)");
         sections.require(
-            model.weight_half_width <= (mesh.cells_along_front / 2) << model.model.global_refinements,
-            "Elliptical model/Front weight half-width", model.weight_half_width,
+            model.weight_half_width <= model.front_cells() / 2, "Elliptical model/Front weight half-width",
+            model.weight_half_width,
             "(0, Cells along front x 2^Global refinements/2] for this scene (its coarse model halves the "
             "cells)");
       }
