@@ -137,22 +137,24 @@ int main(int argc, char **argv)
       const double               lambda0 = 1e-3, E_star = 1e7 / (1 - 0.49 * 0.49);
       const PowerSpectrum        spectrum = power_law_spectrum(0.75, 2 * M_PI / lambda0, 32, 0.01 * lambda0);
       const ContactSolverControl control{5000, 1e-8};
-      const FourierTransform     probe(square_grid(2, lambda0), Planning::estimate, world, how);
-      print("# FFTW planning: %s; ranks: %d (grid split: %s); load average at the start %s\n",
-            planning == Planning::measure ? "measure" : "estimate", ranks,
-            !probe.split()          ? "no"
-            : probe.shares_memory() ? "in shared memory"
-                                    : "by FFTW's MPI plans",
-            load_average().c_str());
-      print("# %5s | %5s %8s %9s %9s %7s %9s | %11s %8s | %5s %8s | %5s %8s %7s | %7s | %s\n", "N", "iter",
-            "time(s)", "s/iter", "s/conv", "iter/c", "old res", "cold iter", "time(s)", "iter6", "time6(s)",
-            "iterA", "timeA(s)", "A_nc", "MB/rank", "load average");
       for (const unsigned int n : sizes)
         {
           const PeriodicGrid     grid = square_grid(n, lambda0);
           const FourierTransform transform(grid, planning, world, how);
-          const GridField        h = gaussian_field(transform, spectrum, realisation_seed(1, 0));
-          const double           sqrt_V =
+          if (n == sizes.front())
+            {
+              print("# FFTW planning: %s; ranks: %d (grid split: %s); load average at the start %s\n",
+                    planning == Planning::measure ? "measure" : "estimate", ranks,
+                    !transform.split()          ? "no"
+                    : transform.shares_memory() ? "in shared memory"
+                                                : "by FFTW's MPI plans",
+                    load_average().c_str());
+              print("# %5s | %5s %8s %9s %9s %7s %9s | %11s %8s | %5s %8s | %5s %8s %7s | %7s | %s\n", "N",
+                    "iter", "time(s)", "s/iter", "s/conv", "iter/c", "old res", "cold iter", "time(s)",
+                    "iter6", "time6(s)", "iterA", "timeA(s)", "A_nc", "MB/rank", "load average");
+            }
+          const GridField h = gaussian_field(transform, spectrum, realisation_seed(1, 0));
+          const double    sqrt_V =
               std::sqrt(lattice_moments(grid, pressure_spectrum(spectrum, E_star)).expected.m0);
           const HalfSpaceContact contact(transform, h, E_star);
 
@@ -160,12 +162,13 @@ int main(int argc, char **argv)
           // (rank 0's clock decides when to stop, for all ranks).
           transform.for_each_point(
               [&](const std::size_t i, const std::size_t w) { transform.work_array()[w] = h[i]; });
-          const auto   fft_start = Clock::now();
-          const auto   probe = transform.tabulate([](const Wavevector &) { return std::complex<double>(1); });
+          const auto fft_start = Clock::now();
+          const auto identity =
+              transform.tabulate([](const Wavevector &) { return std::complex<double>(1); });
           unsigned int repeats = 0;
           for (int more = 1; more;)
             {
-              transform.convolve_work_array(probe);
+              transform.convolve_work_array(identity);
               more = ++repeats < 3 || seconds_since(fft_start) < 1;
               MPI_Bcast(&more, 1, MPI_INT, 0, world);
             }
