@@ -21,7 +21,7 @@
 // counts (benchmark_contact.sh ranks).
 //
 // Usage: [mpirun -np P] benchmark_contact [measure] [fftw-mpi] [N ...]
-// (default N: 256 512 1024 2048 4096; "measure": FFTW_MEASURE plans instead
+// (N in [256, 65536], default 256 512 1024 2048 4096; "measure": FFTW_MEASURE plans instead
 // of FFTW_ESTIMATE; "fftw-mpi": FFTW's MPI plans on one node too)
 #include "contact/half_space_contact.h"
 #include "statistics/random_field.h"
@@ -35,6 +35,7 @@
 #include <exception>
 #include <fstream>
 #include <mpi.h>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -130,7 +131,17 @@ int main(int argc, char **argv)
         else if (std::strcmp(argv[k], "fftw-mpi") == 0)
           how = SplitTransform::fftw_mpi;
         else
-          sizes.push_back(std::stoul(argv[k]));
+          {
+            // The adhesive solve's cohesive zone, lambda0/64, needs 4 grid spacings.
+            char         *end;
+            const long    n        = std::strtol(argv[k], &end, 10);
+            constexpr int smallest = 256;
+            if (end == argv[k] || *end != '\0' || n < smallest || n > 65536)
+              throw std::invalid_argument(std::string("benchmark_contact: '") + argv[k] +
+                                          "' is neither 'measure', 'fftw-mpi' nor a grid size N in [" +
+                                          std::to_string(smallest) + ", 65536]");
+            sizes.push_back(n);
+          }
       if (sizes.empty())
         sizes = {256, 512, 1024, 2048, 4096};
 
