@@ -51,9 +51,11 @@ namespace penny
                         "at least Period L/a x Points per cohesive zone/8192");
       }
 
+      // At least Points per cohesive zone grid spacings over l_pz (a
+      // quotient whole but for rounding is taken as whole).
       unsigned int grid_points(const double zone, const double L) const
       {
-        return static_cast<unsigned int>(std::lround(L * zones.points_per_zone / zone));
+        return static_cast<unsigned int>(std::ceil(L * zones.points_per_zone / zone * (1 - 1e-12)));
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
