@@ -62,10 +62,25 @@ namespace penny
                               (k == 0 || grid_sizes[k] > grid_sizes[k - 1]),
                           "Grid sizes", sizes[k], "even whole numbers, increasing");
         entries.numbers("Load ratios", load_ratios, {0.2, 0.5, 0.8}, interval("()", 0, 1),
-                        "p_bar/p* of the solves. Units: none.");
+                        "p_bar/p* of the solves, where the coarsest grid resolves the strip and the gap: "
+                        "a contact half-width of at least 0.05 lambda + 2 points (the pressure is compared "
+                        "more than 0.05 lambda inside the edges) and 5 points of gap beside the edge (the "
+                        "sub-grid edge is fitted to them). Units: none.");
         entries.number(
             "Half-width tolerance", half_width_tolerance, 1e-3, above(0),
             "The verdict: |a - a_Westergaard|/lambda at the finest grid, every load. Units: none.");
+        if (!entries.reading())
+          return;
+        entries.require(grid_sizes.size() >= 2, "Grid sizes", grid_sizes.back(),
+                        "at least two grids (the rates are fitted over them)");
+        const double coarsest = grid_sizes.front();
+        const double lowest   = std::pow(std::sin(M_PI * (0.05 + 2 / coarsest)), 2);
+        const double highest  = std::pow(std::sin(M_PI * (0.5 - 5 / coarsest)), 2);
+        for (const double ratio : load_ratios)
+          entries.require(ratio >= lowest && ratio <= highest, "Load ratios", ratio,
+                          "[" + Table::label(lowest, 3) + ", " + Table::label(highest, 3) +
+                              "] with the coarsest of the Grid sizes, " + Table::label(coarsest) +
+                              " points per wavelength");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
