@@ -46,7 +46,8 @@ namespace penny
         entries.decreasing_numbers(
             "Cohesive zones l_pz/lambda", zones, {1e-3, 5e-4, 2.5e-4, 1.25e-4}, 2, interval("[]", 1e-6, 0.02),
             "l_pz = E* rho^2/(pi w) of the exponential law, extrapolated to 0 through the finest four "
-            "(exponents 1, 1.5, 2; the jump 2, 2.5, 3). Units: lambda.");
+            "(exponents 1, 1.5, 2; the jump 2, 2.5, 3); at most c_min/8 at every alpha, c_min = "
+            "(alpha/4)^(2/5) lambda/pi the gap's half-width at Johnson's jump. Units: lambda.");
         entries.numbers("Points per cohesive zone", points_per_zone, {16, 32},
                         interval("[]", HalfSpaceContact::min_process_zone_points, 1000),
                         "One value, or two increasing for an extrapolation in the grid spacing "
@@ -57,6 +58,17 @@ namespace penny
         entries.require(points_per_zone.size() <= 2 &&
                             (points_per_zone.size() == 1 || points_per_zone[1] > points_per_zone[0]),
                         "Points per cohesive zone", points_per_zone.back(), "one value, or two increasing");
+        // A zone above 1/8 of the gap's half-width at the jump, c_min = (alpha/4)^(2/5)
+        // lambda/pi, leaves the JKR regime before the path reaches the jump.
+        for (const double alpha : alphas)
+          {
+            const double largest = std::pow(alpha / 4, 0.4) / M_PI / 8;
+            entries.require(zones.front() <= largest, "Cohesive zones l_pz/lambda", zones.front(),
+                            "[1e-6, c_min/8 = " + Table::label(largest, 3) +
+                                "] at alpha = " + Table::label(alpha) +
+                                ", c_min = (alpha/4)^(2/5) lambda/pi the gap's half-width "
+                                "at the jump");
+          }
         // Beyond 2^22 points a solve outgrows this verifier's memory and time.
         entries.require(grid_points(zones.back(), points_per_zone.back()) <= (1u << 22),
                         "Points per cohesive zone", points_per_zone.back(),
