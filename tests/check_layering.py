@@ -16,7 +16,7 @@ spectral = ["fourier", "contact", "statistics"]
 allowed = {
     "numerics": [],
     "input": [],
-    "parallel": ["input"],
+    "parallel": ["numerics", "input"],
     "closed_forms": ["numerics", "input"],
     "fe": below_fe,
     "fracture": below_fe + ["fe"],

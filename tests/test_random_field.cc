@@ -6,6 +6,9 @@
 #define BOOST_TEST_MODULE random_field
 #define BOOST_TEST_NO_MAIN
 #include "contact/half_space.h"
+#include "input/input_error.h"
+#include "numerics/solver_failure.h"
+#include "parallel/collective.h"
 #include "parallel/spread_over_ranks.h"
 #include "statistics/random_field.h"
 #include "statistics/roughness.h"
@@ -179,4 +182,39 @@ BOOST_AUTO_TEST_CASE(realisations_gathered_in_index_order)
   BOOST_TEST_REQUIRE(rows.size() == 5u);
   for (unsigned int index = 0; index < 5; ++index)
     BOOST_TEST(rows[index] == std::vector<double>(index, double(index)), tt::per_element());
+}
+
+// A piece that throws on whichever rank draws it: every rank throws it, of
+// the same kind, with the same message (and a solver failure its settings),
+// instead of the others waiting for the gather.
+BOOST_AUTO_TEST_CASE(a_failing_piece_throws_on_every_rank)
+{
+  const auto failing = [](unsigned int index) {
+    if (index == 3)
+      throw SolverFailure("piece 3 did not converge", "its settings");
+    return std::vector<double>(1, index);
+  };
+  bool thrown = false;
+  try
+    {
+      spread_over_ranks(MPI_COMM_WORLD, 6, failing);
+    }
+  catch (const SolverFailure &failure)
+    {
+      thrown = true;
+      BOOST_TEST(std::string(failure.what()) == "piece 3 did not converge");
+      BOOST_TEST(failure.settings == "its settings");
+    }
+  BOOST_TEST(thrown);
+  // The ranks go on together afterwards.
+  BOOST_TEST(spread_over_ranks(MPI_COMM_WORLD, 2, [](unsigned int i) {
+               return std::vector<double>(1, i);
+             }).size() == 2u);
+}
+
+BOOST_AUTO_TEST_CASE(a_failure_on_rank_zero_throws_on_every_rank)
+{
+  BOOST_CHECK_EXCEPTION(run_on_rank_zero(MPI_COMM_WORLD, [] { throw InputError("bad entry"); }), InputError,
+                        [](const InputError &error) { return std::string(error.what()) == "bad entry"; });
+  BOOST_CHECK_NO_THROW(run_on_rank_zero(MPI_COMM_WORLD, [] {}));
 }

@@ -26,6 +26,7 @@
 
 #include "contact/adhesion.h"
 #include "contact/half_space.h"
+#include "numerics/solver_failure.h"
 
 #include <memory>
 #include <stdexcept>
@@ -34,9 +35,12 @@
 namespace penny
 {
   // An iteration that did not reach its tolerance within its limit.
-  struct ContactSolverFailure : std::runtime_error
+  struct ContactSolverFailure : SolverFailure
   {
-    using std::runtime_error::runtime_error;
+    explicit ContactSolverFailure(const std::string &message)
+        : SolverFailure(message, "subsection 'Contact solver' sets its Tolerance and Maximum iterations")
+    {
+    }
   };
 
   struct ContactSolverControl

@@ -15,6 +15,7 @@
 #pragma once
 
 #include "fe/elasticity.h"
+#include "numerics/solver_failure.h"
 
 #include <deal.II/base/timer.h>
 #include <deal.II/dofs/dof_handler.h>
@@ -70,9 +71,12 @@ namespace penny
   };
 
   // A solve that failed or missed its tolerance.
-  struct LinearSolverFailure : std::runtime_error
+  struct LinearSolverFailure : SolverFailure
   {
-    using std::runtime_error::runtime_error;
+    explicit LinearSolverFailure(const std::string &message)
+        : SolverFailure(message, "subsection 'Linear solver' sets the solver, its tolerance and iterations")
+    {
+    }
   };
 
   struct SolveReport

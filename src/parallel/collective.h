@@ -1,46 +1,37 @@
-// Errors that reach every MPI rank: work done on rank 0 alone (files, child
-// processes) reports its failure to all ranks, which throw it together.
+// Errors that reach every MPI rank: work done on some ranks only (files and
+// child processes on rank 0, pieces of work spread over the ranks) reports
+// its failure to all ranks, which throw it together.
 #pragma once
 
-#include "input/input_error.h"
-
-#include <deal.II/base/mpi.h>
+#include <mpi.h>
 
 #include <exception>
-#include <stdexcept>
-#include <string>
 
 namespace penny
 {
-  // Runs `action` on rank 0 of `communicator`; the message of an exception it
-  // throws reaches every rank, where it is thrown again (as InputError if it
-  // was one). Collective.
+  // `failure` is the exception a rank caught, null where none. Collective:
+  // if any rank failed, every rank throws the failure of the lowest failing
+  // rank, that rank as it was, the others with its message as the same kind
+  // (InputError, SolverFailure with its settings, else std::runtime_error);
+  // otherwise returns.
+  void throw_on_every_rank(MPI_Comm communicator, std::exception_ptr failure);
+
+  // Runs `action` on rank 0 of `communicator`; what it throws is thrown on
+  // every rank. Collective.
   template <typename Action> void run_on_rank_zero(const MPI_Comm communicator, Action &&action)
   {
-    std::string message;
-    bool        input_error = false;
-    if (dealii::Utilities::MPI::this_mpi_process(communicator) == 0)
+    std::exception_ptr failure;
+    int                rank = 0;
+    MPI_Comm_rank(communicator, &rank);
+    if (rank == 0)
       try
         {
           action();
         }
-      catch (const InputError &error)
+      catch (...)
         {
-          message     = error.what();
-          input_error = true;
+          failure = std::current_exception();
         }
-      catch (const std::exception &error)
-        {
-          message = error.what();
-          if (message.empty())
-            message = "unknown failure";
-        }
-    message     = dealii::Utilities::MPI::broadcast(communicator, message, 0);
-    input_error = dealii::Utilities::MPI::broadcast(communicator, input_error, 0);
-    if (message.empty())
-      return;
-    if (input_error)
-      throw InputError(message);
-    throw std::runtime_error(message);
+    throw_on_every_rank(communicator, failure);
   }
 } // namespace penny

@@ -1,5 +1,7 @@
 #include "parallel/spread_over_ranks.h"
 
+#include "parallel/collective.h"
+
 #include <cstdlib>
 
 namespace penny
@@ -35,16 +37,29 @@ namespace penny
       return index;
     };
 
+    // A piece that throws ends the drawing on every rank (the counter set
+    // to n), and its error is thrown on all of them together.
     std::vector<double> packed;
+    std::exception_ptr  failure;
     for (unsigned int index = draw(); index < n; index = draw())
-      {
-        const std::vector<double> row = piece(index);
-        packed.push_back(index);
-        packed.push_back(row.size());
-        packed.insert(packed.end(), row.begin(), row.end());
-      }
+      try
+        {
+          const std::vector<double> row = piece(index);
+          packed.push_back(index);
+          packed.push_back(row.size());
+          packed.insert(packed.end(), row.begin(), row.end());
+        }
+      catch (...)
+        {
+          failure = std::current_exception();
+          MPI_Win_lock(MPI_LOCK_SHARED, 0, 0, window);
+          MPI_Accumulate(&n, 1, MPI_UNSIGNED, 0, 0, 1, MPI_UNSIGNED, MPI_REPLACE, window);
+          MPI_Win_unlock(0, window);
+          break;
+        }
 
     MPI_Win_free(&window);
+    throw_on_every_rank(communicator, failure);
 
     int              length = packed.size();
     std::vector<int> lengths(size), offsets(size);

@@ -19,7 +19,8 @@ namespace penny
   // from a counter on rank 0 whenever it is free (dynamic scheduling: pieces
   // of unequal cost balance themselves); piece(i) must depend on i alone.
   // Each result is a row of doubles (any length). Returns all rows, indexed
-  // by piece, on every rank.
+  // by piece, on every rank. If a piece throws, the ranks stop drawing and
+  // all throw it together (throw_on_every_rank).
   std::vector<std::vector<double>>
   spread_over_ranks(MPI_Comm communicator, unsigned int n,
                     const std::function<std::vector<double>(unsigned int)> &piece);

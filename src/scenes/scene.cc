@@ -1,9 +1,8 @@
 #include "scenes/scene.h"
 
-#include "contact/half_space_contact.h"
-#include "fe/linear_elastic_system.h"
 #include "input/input_error.h"
 #include "input/parameter_file.h"
+#include "numerics/solver_failure.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -152,16 +151,9 @@ namespace penny
       {
         verdict = file.scene->run(*results, log);
       }
-    catch (const LinearSolverFailure &failure)
+    catch (const SolverFailure &failure)
       {
-        throw std::runtime_error(
-            std::string(failure.what()) +
-            " (subsection 'Linear solver' sets the solver, its tolerance and iterations)");
-      }
-    catch (const ContactSolverFailure &failure)
-      {
-        throw std::runtime_error(std::string(failure.what()) +
-                                 " (subsection 'Contact solver' sets its Tolerance and Maximum iterations)");
+        throw std::runtime_error(std::string(failure.what()) + " (" + failure.settings + ")");
       }
     results->write("parameters.prm", file.used_parameters);
     results->commit();
