@@ -107,7 +107,9 @@ namespace penny
             // Far above sqrt(V) the law's gaps all close: a ratio with nothing to compare.
             const Table::Cell ratio = consistent > 0 ? Table::Cell(area.value / consistent, Table::Format{3})
                                                      : Table::Cell("law: no gaps");
-            table.add_row({mean_pressures[l], area.value, area.standard_error,
+            const Table::Cell error = input.surfaces.n_realisations > 1 ? Table::Cell(area.standard_error)
+                                                                        : Table::Cell("one realisation");
+            table.add_row({mean_pressures[l], area.value, error,
                            linear_law_noncontact_area(laws[0].gaps, loads[l] / laws[0].sqrt_V), consistent,
                            expected_gap_area(pressure, loads[l]),
                            std::erfc(mean_pressures[l] / std::sqrt(2.)), ratio,
