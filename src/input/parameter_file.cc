@@ -19,14 +19,14 @@ namespace penny
     if (!std::filesystem::is_regular_file(filename))
       throw InputError("parameter file " + in_quotes(filename) + " does not exist or is not a file");
     const std::string extension = std::filesystem::path(filename).extension();
-    ParameterFile     file{filename, "", {filename}, {}};
+    ParameterFile     file{filename, "", {filename}, {}, {}};
     bool              sets_any = false;
     if (extension == ".prm")
       {
-        const PrmStatements statements = scan_prm_statements(filename);
-        file.files                     = statements.files;
-        file.scene                     = statements.scene;
-        sets_any                       = statements.sets_any;
+        file.statements = scan_prm_statements(filename);
+        file.files      = file.statements.files;
+        file.scene      = file.statements.scene;
+        sets_any        = file.statements.sets_any;
       }
     else if (extension == ".json" || extension == ".xml")
       {
@@ -64,6 +64,18 @@ namespace penny
           message = "line " + match[1].str() + ": subsection '" + match[2].str() +
                     "' is not read by Scene = " + scene + " ('penny --print-parameters " + scene +
                     "' lists what it reads)";
+        // An entry the scene does not declare, named with its subsection.
+        else if (std::regex_search(message, match,
+                                   std::regex("Line <([0-9]+)> of file <(.*)>: No entry with name <.*> was "
+                                              "declared in the current subsection")))
+          {
+            const auto statement = file.statements.set_statements.find(
+                {std::filesystem::weakly_canonical(match[2].str()).string(), std::stoul(match[1].str())});
+            if (statement != file.statements.set_statements.end())
+              message = statement->second.first + ": " + statement->second.second +
+                        " is not an entry of Scene = " + scene + " ('penny --print-parameters " + scene +
+                        "' lists them)";
+          }
         throw InputError(message);
       }
   }

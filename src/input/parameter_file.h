@@ -3,6 +3,8 @@
 // subsections to declare; then, with those declared, the values themselves.
 #pragma once
 
+#include "input/prm_statements.h"
+
 #include <deal.II/base/parameter_handler.h>
 
 #include <boost/property_tree/ptree.hpp>
@@ -15,9 +17,10 @@ namespace penny
   struct ParameterFile
   {
     std::string                 filename;
-    std::string                 scene; // the 'Scene' entry; empty if the file does not set it
-    std::vector<std::string>    files; // the file and every file it includes
-    boost::property_tree::ptree tree;  // a JSON or XML file's entries
+    std::string                 scene;      // the 'Scene' entry; empty if the file does not set it
+    std::vector<std::string>    files;      // the file and every file it includes
+    boost::property_tree::ptree tree;       // a JSON or XML file's entries
+    PrmStatements               statements; // a .prm file's set statements
   };
 
   // Throws InputError (one line) for a file that is missing, of another kind,

@@ -75,7 +75,8 @@ namespace penny
                   entry += subsection + "/";
                 const std::string name = dealii::Utilities::trim(rest.substr(0, rest.find('=')));
                 entry += name;
-                const auto [earlier, first_time] = set_at.emplace(entry, where);
+                result.set_statements[{file, first}] = {where, entry};
+                const auto [earlier, first_time]     = set_at.emplace(entry, where);
                 if (!first_time)
                   throw InputError(where + ": " + entry + " is set a second time (first on " +
                                    earlier->second + "); set each entry once");

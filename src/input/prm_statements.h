@@ -5,7 +5,9 @@
 // lines), and finds the 'Scene' entry, which decides what else is declared.
 #pragma once
 
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace penny
@@ -15,6 +17,9 @@ namespace penny
     std::vector<std::string> files; // the file and every file it includes, in reading order
     bool                     sets_any = false;
     std::string              scene; // 'set Scene = ...' at the top level; empty if not set
+    // Each set statement by (canonical file, line): where it is, as messages
+    // name it ("line 8", or "'inc.prm', line 3"), and its entry "Subsection/Name".
+    std::map<std::pair<std::string, unsigned int>, std::pair<std::string, std::string>> set_statements;
   };
 
   // Throws InputError (one line) for a file that is missing or not a regular
