@@ -51,9 +51,36 @@ namespace penny
   // A message longer than a few lines echoes some value whole; its middle goes.
   std::string one_line(const std::string &text)
   {
+    // The length of the UTF-8 sequence of a printable character at text[i],
+    // 0 if it is not one (a binary file's bytes).
+    const auto utf8_length = [&](const std::size_t i) -> std::size_t {
+      const unsigned char lead   = text[i];
+      const std::size_t   length = lead >= 0xc2 && lead <= 0xdf   ? 2
+                                   : lead >= 0xe0 && lead <= 0xef ? 3
+                                   : lead >= 0xf0 && lead <= 0xf4 ? 4
+                                                                  : 0;
+      for (std::size_t k = 1; k < length; ++k)
+        if (i + k >= text.size() || (static_cast<unsigned char>(text[i + k]) & 0xc0) != 0x80)
+          return 0;
+      // U+0080 ... U+009F are control characters too.
+      if (lead == 0xc2 && static_cast<unsigned char>(text[i + 1]) < 0xa0)
+        return 0;
+      return length;
+    };
     std::string collapsed;
-    for (char ch : text)
+    for (std::size_t i = 0; i < text.size(); ++i)
       {
+        char ch = text[i];
+        if (static_cast<unsigned char>(ch) >= 0x80)
+          {
+            if (const std::size_t length = utf8_length(i))
+              {
+                collapsed += text.substr(i, length);
+                i += length - 1;
+                continue;
+              }
+            ch = '?';
+          }
         if (ch == '\n' || ch == '\r' || ch == '\t')
           ch = ' ';
         // Other control characters (a terminal's escape sequences) are not echoed.
