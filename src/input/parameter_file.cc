@@ -54,6 +54,9 @@ namespace penny
     catch (const dealii::ExceptionBase &exception)
       {
         std::string message = one_line(exception);
+        // The scene as the messages below name it.
+        const std::string which =
+            "Scene = " + scene + (file.scene.empty() ? ", the default, as the file sets no Scene" : "");
         // With only the scene's subsections declared, any other subsection
         // is one the scene does not read.
         std::smatch match;
@@ -61,9 +64,8 @@ namespace penny
             std::regex_search(message, match,
                               std::regex("Line <([0-9]+)> of file <.*: There is no such subsection to be "
                                          "entered: (.*)$")))
-          message = "line " + match[1].str() + ": subsection '" + match[2].str() +
-                    "' is not read by Scene = " + scene + " ('penny --print-parameters " + scene +
-                    "' lists what it reads)";
+          message = "line " + match[1].str() + ": subsection '" + match[2].str() + "' is not read by " +
+                    which + " ('penny --print-parameters " + scene + "' lists what it reads)";
         // An entry the scene does not declare, named with its subsection.
         else if (std::regex_search(message, match,
                                    std::regex("Line <([0-9]+)> of file <(.*)>: No entry with name <.*> was "
@@ -72,9 +74,8 @@ namespace penny
             const auto statement = file.statements.set_statements.find(
                 {std::filesystem::weakly_canonical(match[2].str()).string(), std::stoul(match[1].str())});
             if (statement != file.statements.set_statements.end())
-              message = statement->second.first + ": " + statement->second.second +
-                        " is not an entry of Scene = " + scene + " ('penny --print-parameters " + scene +
-                        "' lists them)";
+              message = statement->second.first + ": " + statement->second.second + " is not an entry of " +
+                        which + " ('penny --print-parameters " + scene + "' lists them)";
           }
         throw InputError(message);
       }
