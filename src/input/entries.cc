@@ -49,6 +49,15 @@ namespace penny
                         " the allowed range " + range);
     }
 
+    // deal.II reads numbers with strtod, which also takes hexadecimal ones
+    // ("0x10", "0x1p-6"): a parameter file means decimals.
+    void require_decimal(const std::string &name, const std::string &text, const std::string &range)
+    {
+      if (text.find_first_of("xX") != std::string::npos)
+        throw InputError(name + " = " + in_quotes(text) + " is not a decimal number in the allowed range " +
+                         range);
+    }
+
     std::string joined(const std::vector<std::string> &items, const std::string &separator)
     {
       std::string text;
@@ -107,6 +116,7 @@ namespace penny
                           documented(documentation, range.text));
         return;
       }
+    require_decimal(name(entry), prm.get(entry), range.text);
     try
       {
         value = prm.get_double(entry);
@@ -139,11 +149,14 @@ namespace penny
       --last;
     const auto [end, error] = std::from_chars(first, last, value);
     if (error == std::errc::result_out_of_range)
-      throw InputError(name(entry) + " = " + std::string(first, last) + " is outside the allowed range " + range);
+      throw InputError(name(entry) + " = " + std::string(first, last) + " is outside the allowed range " +
+                       range);
     if (error != std::errc() || end != last)
-      throw InputError(name(entry) + " = " + in_quotes(text) + " is not an integer in the allowed range " + range);
+      throw InputError(name(entry) + " = " + in_quotes(text) + " is not an integer in the allowed range " +
+                       range);
     if (value < lo || value > hi)
-      throw InputError(name(entry) + " = " + std::to_string(value) + " is outside the allowed range " + range);
+      throw InputError(name(entry) + " = " + std::to_string(value) + " is outside the allowed range " +
+                       range);
   }
 
   void Entries::numbers(const std::string &entry, std::vector<double> &values,
@@ -160,8 +173,14 @@ namespace penny
         return;
       }
     values.clear();
-    for (const std::string &item : dealii::Utilities::split_string_list(prm.get(entry)))
+    // deal.II's split drops an empty last item: "1, 2," would read as "1, 2".
+    const std::string text = dealii::Utilities::trim(prm.get(entry));
+    if (!text.empty() && text.back() == ',')
+      throw InputError(name(entry) + " = " + in_quotes(text) + " ends with a comma: a list of numbers in " +
+                       range.text);
+    for (const std::string &item : dealii::Utilities::split_string_list(text))
       {
+        require_decimal(name(entry), item, range.text);
         double x;
         try
           {
@@ -215,7 +234,8 @@ namespace penny
     if (!reading_)
       return;
     if (values.size() < min_count)
-      throw InputError(name(entry) + " = " + in_quotes(prm.get(entry)) + " is outside the allowed range " + allowed);
+      throw InputError(name(entry) + " = " + in_quotes(prm.get(entry)) + " is outside the allowed range " +
+                       allowed);
     for (std::size_t k = 1; k < values.size(); ++k)
       require(values[k] < values[k - 1], entry, values[k], allowed);
   }
