@@ -37,8 +37,9 @@ namespace penny
       return index;
     };
 
-    // A piece that throws ends the drawing on every rank (the counter set
-    // to n), and its error is thrown on all of them together.
+    // A piece that throws ends the drawing on every rank (n added to the
+    // counter: the same operation as the draws, as concurrent atomic updates
+    // of one location must be), and its error is thrown on all of them together.
     std::vector<double> packed;
     std::exception_ptr  failure;
     for (unsigned int index = draw(); index < n; index = draw())
@@ -52,8 +53,9 @@ namespace penny
       catch (...)
         {
           failure = std::current_exception();
+          unsigned int drawn;
           MPI_Win_lock(MPI_LOCK_SHARED, 0, 0, window);
-          MPI_Accumulate(&n, 1, MPI_UNSIGNED, 0, 0, 1, MPI_UNSIGNED, MPI_REPLACE, window);
+          MPI_Fetch_and_op(&n, &drawn, MPI_UNSIGNED, 0, 0, MPI_SUM, window);
           MPI_Win_unlock(0, window);
           break;
         }
