@@ -18,7 +18,7 @@
 // where they share a node, else FFTW's MPI interface: SplitTransform); one
 // rank runs the serial transforms. Each solve's results follow as "# result"
 // lines (A_nc and the mean gap, all digits) for comparison across rank
-// counts (benchmark_contact.sh ranks).
+// counts (postprocess/benchmark_contact_ranks.sh).
 //
 // Usage: [mpirun -np P] benchmark_contact [measure] [fftw-mpi] [N ...]
 // (N in [256, 65536], default 256 512 1024 2048 4096; "measure": FFTW_MEASURE plans instead
