@@ -16,6 +16,8 @@ build="$(realpath "${1:-$root/build}")"
 out="$(realpath -m "${2:-$root/output/benchmark-contact-ranks}")"
 n=${RANKS_N:-2048}
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+[ -x "$build/benchmark_contact" ] ||
+  { echo "$0: $build/benchmark_contact is missing (usage: $0 [BUILD [OUT]], BUILD a build folder)" >&2; exit 1; }
 mkdir -p "$out"
 runs=()
 for planning in estimate measure; do

@@ -14,6 +14,8 @@ set -euo pipefail
 root="$(cd "$(dirname "$0")/.." && pwd)"
 build="$(realpath "${1:-$root/build}")"
 out="$(realpath -m "${2:-$root/output/benchmark-contact-speed}")"
+[ -x "$build/benchmark_contact" ] ||
+  { echo "$0: $build/benchmark_contact is missing (usage: $0 [BUILD [OUT]], BUILD a build folder)" >&2; exit 1; }
 mkdir -p "$out"
 for planning in estimate measure; do
   option=$([ $planning = measure ] && echo measure || true)
