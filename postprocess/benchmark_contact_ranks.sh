@@ -31,34 +31,36 @@ for planning in estimate measure; do
     runs+=("$planning" "$split" "$out/$planning-1-rank.txt" "$out/$planning-2-ranks-$split.txt")
   done
 done
+# Per planning and split: four rows of speed-up, then one of differences.
+speed_rows="" difference_rows=""
+for ((k = 0; k < ${#runs[@]}; k += 4)); do
+  # A row: | N | iter time ... | cold iter + coarse, time | iter6 time6 | iterA timeA A_nc | ...
+  rows=$(awk -v planning="${runs[k]}" -v how="${runs[k + 1]}" '
+    FNR == 1 { file++ }
+    /^ *[0-9]+ \|/ { split($0, f, "|"); split(f[2], a, " "); split(f[3], b, " "); split(f[4], c, " "); split(f[5], d, " ")
+                     time["six loads 3 ... 0.5 sqrt(V)", file] = c[2]; time["adhesive at 2 sqrt(V)", file] = d[2]
+                     time["from full contact", file] = a[2]; time["cold start", file] = b[4] }
+    /^# result/ { if (file == 1) { area[$4] = $6; gap[$4] = $8 }
+                  else { da = $6 - area[$4]; dg = ($8 - gap[$4]) / gap[$4]
+                         if (da < 0) da = -da; if (dg < 0) dg = -dg
+                         if (da > area_difference) area_difference = da; if (dg > gap_difference) gap_difference = dg } }
+    END { split("six loads 3 ... 0.5 sqrt(V)|adhesive at 2 sqrt(V)|from full contact|cold start", solves, "|")
+          for (s = 1; s <= 4; ++s) {
+            one = time[solves[s], 1]; two = time[solves[s], 2]
+            printf "| %s | %s | %s | %.2f | %.2f | %.2f | %s |\n", planning, how, solves[s], one, two, one / two,
+                   (one / two >= 1.7 ? "yes" : "no") }
+          printf "| %s | %s | %.1e | %.1e |\n", planning, how, area_difference, gap_difference }
+  ' "${runs[k + 2]}" "${runs[k + 3]}")
+  speed_rows+="$(head -n 4 <<< "$rows")"$'\n'
+  difference_rows+="$(tail -n 1 <<< "$rows")"$'\n'
+done
 {
   echo "| FFTW planning | grid split | solve at $n^2 | 1 rank (s) | 2 ranks (s) | speed-up | at least 1.7 |"
   echo "|---|---|---|---|---|---|---|"
-  differences="| FFTW planning | grid split | largest A_nc difference, 1 vs 2 ranks | largest mean gap difference (relative) |
-|---|---|---|---|"
-  for ((k = 0; k < ${#runs[@]}; k += 4)); do
-    # A row: | N | iter time ... | cold iter + coarse, time | iter6 time6 | iterA timeA A_nc | ...
-    awk -v planning="${runs[k]}" -v how="${runs[k + 1]}" '
-      FNR == 1 { file++ }
-      /^ *[0-9]+ \|/ { split($0, f, "|"); split(f[2], a, " "); split(f[3], b, " "); split(f[4], c, " "); split(f[5], d, " ")
-                       time["six loads 3 ... 0.5 sqrt(V)", file] = c[2]; time["adhesive at 2 sqrt(V)", file] = d[2]
-                       time["from full contact", file] = a[2]; time["cold start", file] = b[4] }
-      /^# result/ { if (file == 1) { area[$4] = $6; gap[$4] = $8 }
-                    else { da = $6 - area[$4]; dg = ($8 - gap[$4]) / gap[$4]
-                           if (da < 0) da = -da; if (dg < 0) dg = -dg
-                           if (da > area_difference) area_difference = da; if (dg > gap_difference) gap_difference = dg } }
-      END { split("six loads 3 ... 0.5 sqrt(V)|adhesive at 2 sqrt(V)|from full contact|cold start", solves, "|")
-            for (s = 1; s <= 4; ++s) {
-              one = time[solves[s], 1]; two = time[solves[s], 2]
-              printf "| %s | %s | %s | %.2f | %.2f | %.2f | %s |\n", planning, how, solves[s], one, two, one / two,
-                     (one / two >= 1.7 ? "yes" : "no") }
-            printf "%s %s %.1e %.1e\n", planning, how, area_difference, gap_difference > "/dev/stderr" }
-    ' "${runs[k + 2]}" "${runs[k + 3]}" 2>> "$out/differences.txt"
-  done
-  echo
-  echo "$differences"
-  awk '{ printf "| %s | %s | %s | %s |\n", $1, $2, $3, $4 }' "$out/differences.txt"
+  printf "%s\n" "$speed_rows"
+  echo "| FFTW planning | grid split | largest A_nc difference, 1 vs 2 ranks | largest mean gap difference (relative) |"
+  echo "|---|---|---|---|"
+  printf "%s" "$difference_rows"
 } > "$out/speed-up.md.partial"
-rm "$out/differences.txt"
 mv "$out/speed-up.md.partial" "$out/speed-up.md"
 cat "$out/speed-up.md"

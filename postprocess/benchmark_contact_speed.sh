@@ -41,5 +41,6 @@ awk '
     row("iterations 4096^2 / 512^2, the six loads: at most 1.3",
         (4096 in six) && (512 in six) ? ratio(six[4096], six[512]) : -1, "%.2f", 1.3)
     exit failed }
-' "$out/speed-measure.txt" > "$out/targets.md"
+' "$out/speed-measure.txt" > "$out/targets.md.partial"
+mv "$out/targets.md.partial" "$out/targets.md"
 cat "$out/targets.md"
