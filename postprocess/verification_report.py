@@ -202,16 +202,22 @@ def verifying_files(arguments):
     return [f for f in sorted(arguments.prms.glob("*.prm")) if has_verdict(arguments.penny, scene_of(f))]
 
 
-def commit(build):
-    """The commit of the sources the build was made from (its CMakeCache.txt names them), with a hash of
-    their uncommitted changes where there are any."""
+def sources(build):
+    """The source folder the build was made from (its CMakeCache.txt names it), or None."""
     cache = build / "CMakeCache.txt"
     found = re.search(r"^CMAKE_HOME_DIRECTORY:INTERNAL=(.*)$", cache.read_text(), re.MULTILINE) if cache.is_file() else None
-    if not found:
+    return pathlib.Path(found.group(1)) if found else None
+
+
+def commit(build):
+    """The commit of the sources the build was made from, with a hash of their uncommitted changes where
+    there are any."""
+    folder = sources(build)
+    if not folder:
         return "unknown (no CMakeCache.txt in the build folder)"
 
     def git(*words):
-        return subprocess.run(["git", "-C", found.group(1), *words], capture_output=True, text=True).stdout
+        return subprocess.run(["git", "-C", str(folder), *words], capture_output=True, text=True).stdout
     head = git("rev-parse", "--short=10", "HEAD").strip() or "unknown"
     changes = git("diff", "HEAD")
     return head + ("+" + hashlib.sha256(changes.encode()).hexdigest()[:8] if changes else "")
@@ -317,7 +323,10 @@ def write_report(arguments, records, header):
                      record["load average before"], record["date"]])
         if record["scene"] in PAPER_CLAIMS:
             claim, section = PAPER_CLAIMS[record["scene"]]
-            claims.append([claim, f"doc/theory.md section {section}", name, record["verdict"], error, tolerance])
+            claims.append((list(PAPER_CLAIMS).index(record["scene"]),
+                           [claim, f"doc/theory.md section {section}", name, record["verdict"], error, tolerance]))
+    # In the paper's order (PAPER_CLAIMS), whatever order the runs were named in.
+    claims = [row for _, row in sorted(claims, key=lambda claim: claim[0])]
     claim_columns = ["the paper's claim", "derived in", "run", "verdict", "error", "tolerance"]
     run_columns = ["run", "scene", "verdict", "what was compared", "error", "tolerance", "wall time (s)",
                    "peak memory (MB)", "ranks", "load average at start", "finished"]
@@ -353,8 +362,9 @@ def write_report(arguments, records, header):
 
 def write_documents(arguments, header, summary, claims_table, records):
     """Rewrites the generated blocks of the documents from this report's records."""
-    prms = arguments.prms.resolve()
-    where = prms.relative_to(REPOSITORY) if prms.is_relative_to(REPOSITORY) else prms
+    # Where the parameter files are, relative to the build's sources where they lie in them.
+    prms, folder = arguments.prms.resolve(), sources(arguments.build)
+    where = prms.relative_to(folder.resolve()) if folder and prms.is_relative_to(folder.resolve()) else prms
     by_name = {name: (folder, record) for name, folder, record in records}
     source = f"commit {header['commit']}, {arguments.ranks} rank(s) per run"
 
