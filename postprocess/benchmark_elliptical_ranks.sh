@@ -1,12 +1,12 @@
 #!/usr/bin/env bash
 # One 3D model of a million DoFs shared by 1 and by 2 MPI ranks, with each
 # iterative solver: the elliptical gap of prms/elliptical-gap.prm (b/a = 0.5)
-# at degree 2 with one global refinement on CG + AMG (40704 cells, 1,020,663
-# DoFs), and at degree 4 on the matrix-free CG + p-multigrid (5088 cells,
-# 1,020,663 DoFs), tolerance 1e-10, no fields; then the wall time of each
-# phase on both rank counts, the speed-up, and how far K_I moved
-# (postprocess/report_speed_up.py). About 14 minutes and 12 GB (AMG) plus
-# 11 minutes and 1.3 GB (matrix-free) on the 2-core machine; run it idle.
+# at degree 2 with one global refinement on CG + AMG, and at degree 4 on the
+# matrix-free CG + p-multigrid (the same DoFs, just over a million),
+# tolerance 1e-10, no fields; then the wall time of each phase on both rank
+# counts, the speed-up, and how far K_I moved (postprocess/report_speed_up.py).
+# About 22 minutes and 13 GB (AMG) plus 14 minutes and 1.4 GB (matrix-free)
+# on the 2-core machine; run it idle.
 # Usage, from anywhere: postprocess/benchmark_elliptical_ranks.sh [BUILD [OUT]]
 # (defaults: build, output/benchmark-elliptical-ranks, both from the repository root)
 set -euo pipefail
