@@ -66,8 +66,8 @@ namespace
                                    const ResultFolder *fields)
   {
     dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
-    return measure_elliptical_gap(test_size(4, {0.2, 0.4}), {1, aspect_ratio, pressure, 3}, timer, std::cout,
-                                  fields);
+    return measure_elliptical_gap(test_size(4, {0.2, 0.4}), {1, aspect_ratio, pressure, 0, 0, 3}, timer,
+                                  std::cout, fields);
   }
 } // namespace
 
@@ -204,6 +204,31 @@ BOOST_AUTO_TEST_CASE(uniform_pressure_of_either_sign)
     }
 }
 
+// A quadratic face traction, p (1 - 0.6 x^2/a^2 + 0.5 y^2/b^2), on the
+// test-size model: K_I at every front point and ring, the central opening
+// and the gap volume beside Galin's closed form within the uniform
+// pressure's 7e-2 (measured: K_I 4.4e-2 ... 5.3e-2, w(0) 5.2e-2, the volume
+// 5.6e-2), K_I of the sign of p.
+BOOST_AUTO_TEST_CASE(quadratic_traction_against_galin)
+{
+  dealii::TimerOutput   timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+  const EllipticalModel model = test_size(4, {0.2, 0.4});
+  const EllipticalGap   gap{1, 0.5, 1e6, -0.6, 0.5, 3};
+  const EllipticalGapMeasurement solved = measure_elliptical_gap(model, gap, timer, std::cout, nullptr);
+  const GalinSolution            galin(1, 0.5, gap.traction(), model.model.material.plane_strain_modulus());
+  for (unsigned int i = 0; i < solved.angles.size(); ++i)
+    BOOST_TEST(solved.exact_sifs[i] == galin.stress_intensity_factor(solved.angles[i]), tt::tolerance(1e-14));
+  for (const auto &ring : solved.signed_sifs)
+    for (unsigned int i = 0; i < ring.size(); ++i)
+      {
+        BOOST_TEST(ring[i] > 0);
+        BOOST_TEST(ring[i] == solved.exact_sifs[i], tt::tolerance(7e-2));
+      }
+  BOOST_TEST(solved.opening_at_centre == galin.opening(0, 0), tt::tolerance(7e-2));
+  BOOST_TEST(solved.gap_volume == galin.gap_volume(), tt::tolerance(7e-2));
+  BOOST_TEST(solved.axisymmetric_sifs.empty());
+}
+
 // The matrix-free p-multigrid solver against the direct one on the same
 // test-size mesh, degrees 1 (the coarse solve alone), 2 and 3: K_I at every
 // front point and ring and the central opening equal to 1e-8 (both solves
@@ -221,7 +246,7 @@ BOOST_AUTO_TEST_CASE(matrix_free_multigrid_against_the_direct_solver)
           model.model.linear_solver.type      = type;
           model.model.linear_solver.tolerance = 1e-10;
           dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
-          solved.push_back(measure_elliptical_gap(model, {1, 0.5, 1e6, 3}, timer, std::cout, nullptr));
+          solved.push_back(measure_elliptical_gap(model, {1, 0.5, 1e6, 0, 0, 3}, timer, std::cout, nullptr));
         }
       BOOST_TEST(solved[1].solver == "CG + matrix-free p-multigrid");
       BOOST_TEST(solved[1].iterations > 0u);
@@ -260,7 +285,7 @@ BOOST_AUTO_TEST_CASE(far_field_boundary)
       EllipticalModel model    = test_size(4, {0.2, 0.4});
       model.model.far_boundary = far_boundary;
       dealii::TimerOutput timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
-      solved.push_back(measure_elliptical_gap(model, {1, 1, 1e6, 3}, timer, std::cout, nullptr));
+      solved.push_back(measure_elliptical_gap(model, {1, 1, 1e6, 0, 0, 3}, timer, std::cout, nullptr));
     }
   const auto &[free, far_field, clamped] = std::tie(solved[0], solved[1], solved[2]);
   for (unsigned int i = 0; i < free.angles.size(); ++i)
@@ -286,11 +311,30 @@ BOOST_AUTO_TEST_CASE(galin_tractions_against_known_cases)
     BOOST_TEST(uniform.stress_intensity_factor(phi) == green_sneddon.stress_intensity_factor(phi),
                tt::tolerance(1e-10));
   BOOST_TEST(uniform.opening(0.5, 0.3) == green_sneddon.opening(0.5, 0.3), tt::tolerance(1e-10));
+  BOOST_TEST(uniform.gap_volume() == green_sneddon.gap_volume(), tt::tolerance(1e-10));
   const double        c = 1.5;
   const GalinSolution squared_radius(c, c, {0, 1, 1}, e_prime);
   for (const double phi : {0., 0.4, 1., M_PI / 2})
     BOOST_TEST(squared_radius.stress_intensity_factor(phi) == 4 * std::pow(c, 2.5) / (3 * std::sqrt(M_PI)),
                tt::tolerance(1e-10));
+  // The volume of a quadratic traction's gap: twice the opening integrated over
+  // the ellipse (x = a sin(chi) cos(t), y = b sin(chi) sin(t), the midpoint
+  // rule in t, exact for these trigonometric polynomials, and Simpson's in chi).
+  const GalinSolution quadratic(2, 0.7, {1, -0.1, 0.4}, e_prime);
+  const double        volume = 2 * simpson(
+                                [&](const double chi) {
+                                  double ring = 0;
+                                  for (unsigned int k = 0; k < 64; ++k)
+                                    {
+                                      const double t = (k + 0.5) * 2 * M_PI / 64;
+                                      ring += quadratic.opening(2 * std::sin(chi) * std::cos(t),
+                                                                       0.7 * std::sin(chi) * std::sin(t)) *
+                                              2 * M_PI / 64;
+                                    }
+                                  return ring * 2 * 0.7 * std::sin(chi) * std::cos(chi);
+                                },
+                                0, M_PI / 2);
+  BOOST_TEST(quadratic.gap_volume() == volume, tt::tolerance(1e-9));
 }
 
 // The summit searches on Galin's closed form: the circle gives the

@@ -119,4 +119,11 @@ namespace penny
                ? std::sqrt(inside) * (coefficients[0] + coefficients[1] * x * x + coefficients[2] * y * y)
                : 0.;
   }
+
+  // 2 int w dA with int sqrt(1 - x^2/a^2 - y^2/b^2) (1, x^2, y^2) dA over the
+  // ellipse = (2 pi a b/3) (1, a^2/5, b^2/5).
+  double GalinSolution::gap_volume() const
+  {
+    return 4 * M_PI * a * b / 3 * (coefficients[0] + (coefficients[1] * a * a + coefficients[2] * b * b) / 5);
+  }
 } // namespace penny

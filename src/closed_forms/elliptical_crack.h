@@ -74,6 +74,8 @@ namespace penny
     double stress_intensity_factor(double parametric_angle) const;
     // Opening of one face at (x, y) inside the ellipse, 0 outside.
     double opening(double x, double y) const;
+    // Volume between the faces (both faces' openings).
+    double gap_volume() const;
     // C_0 (m), C_1, C_2 (1/m) of the opening polynomial.
     const std::array<double, 3> &opening_polynomial() const { return coefficients; }
 

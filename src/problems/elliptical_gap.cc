@@ -125,10 +125,20 @@ namespace penny
                      "The larger semi-axis of the gap x^2/a^2 + y^2/b^2 < 1 on z = 0, along x. Units: m.");
       entries.number("Aspect ratio b/a", gap.aspect_ratio, 0.5, interval("(]", 0, 1),
                      "The smaller semi-axis b along y over a. Units: none.");
-      entries.number("Pressure p", gap.pressure, 1e6, signed_magnitude("Pa"),
-                     "Uniform normal traction opening the gap faces. Units: Pa.");
+      entries.number(
+          "Pressure p", gap.pressure, 1e6, signed_magnitude("Pa"),
+          "Normal traction opening the gap faces at their centre (everywhere, unless a traction term "
+          "below is set). Units: Pa.");
       entries.require(gap.pressure != 0, "Pressure p", gap.pressure,
                       "|p| in [1e-30, 1e30] Pa: a zero load opens nothing");
+      const std::string traction =
+          "in the face traction p (1 + c_x x^2/a^2 + c_y y^2/b^2): 0 for both c_x and "
+          "c_y is the uniform pressure p (Green-Sneddon/Irwin), otherwise a quadratic "
+          "traction like the summits' tension (Galin's closed form); at least -1, so "
+          "that the traction keeps the sign of p on the gap face and K_I vanishes "
+          "nowhere on the front. Units: none.";
+      entries.number("Traction x^2 term c_x", gap.x_term, 0, interval("[]", -1, 1e6), "c_x " + traction);
+      entries.number("Traction y^2 term c_y", gap.y_term, 0, interval("[]", -1, 1e6), "c_y " + traction);
       entries.integer(
           "Front points", gap.front_points, 17u, 2u, 1000u,
           "K_I is reported at n points from phi = 0 to pi/2 evenly spaced in the front coordinate "
@@ -142,6 +152,12 @@ namespace penny
               "n with n - 1 dividing Cells along front x 2^Global refinements = " +
                   std::to_string(front_cells));
     });
+  }
+
+  QuadraticTraction EllipticalGap::traction() const
+  {
+    const double a = semi_axis_a, b = aspect_ratio * semi_axis_a;
+    return {pressure, pressure * x_term / (a * a), pressure * y_term / (b * b)};
   }
 
   std::string ring_name(const double rho)
@@ -163,9 +179,9 @@ namespace penny
         << system.get_dof_handler().n_dofs() << " DoFs, " << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)
         << " MPI rank(s); solving...\n"
         << std::flush;
-    const double                       p        = gap.pressure;
-    const EllipticalGapModel::Traction pressure = [p](const Point<3> &) { return p; };
-    const DisplacementVector           u        = model.solve(pressure);
+    const QuadraticTraction            t        = gap.traction();
+    const EllipticalGapModel::Traction traction = [t](const Point<3> &x) { return t(x[0], x[1]); };
+    const DisplacementVector           u        = model.solve(traction);
 
     EllipticalGapMeasurement solved;
     solved.angles     = front_point_angles(gap.front_points, model.front());
@@ -175,22 +191,26 @@ namespace penny
       log << "K_I at " << solved.angles.size() << " front points on " << solved.ring_radii.size()
           << " ring(s)...\n"
           << std::flush;
-      // The signed K_I takes the unit pressure as reference; by linearity its
-      // displacement is u/p, no second solve.
-      DisplacementVector u_unit = u;
-      u_unit /= p;
-      const EllipticalGapModel::Traction unit = [](const Point<3> &) { return 1.; };
+      // The signed K_I takes the traction over p (1 at the centre, of one
+      // sign on the face) as reference; by linearity its displacement is u/p,
+      // no second solve.
+      const double       p         = gap.pressure;
+      DisplacementVector reference = u;
+      reference /= p;
+      const EllipticalGapModel::Traction per_p = [&traction, p](const Point<3> &x) {
+        return traction(x) / p;
+      };
       const FrontStressIntensity front(model, solved.angles, settings.weight_half_width, solved.ring_radii);
-      solved.signed_sifs = front.signed_sifs({{&u, &pressure}}, u_unit, unit).front();
+      solved.signed_sifs = front.signed_sifs({{&u, &traction}}, reference, per_p).front();
     }
-    const double               e_prime = model.material().plane_strain_modulus();
-    const GreenSneddonSolution exact(model.front().semi_axis_a(), model.front().semi_axis_b(), p, e_prime);
+    const double        e_prime = model.material().plane_strain_modulus();
+    const GalinSolution exact(model.front().semi_axis_a(), model.front().semi_axis_b(), t, e_prime);
     solved.largest_error = 0;
     for (const double phi : solved.angles)
       solved.exact_sifs.push_back(exact.stress_intensity_factor(phi));
     for (const auto &ring : solved.signed_sifs)
       solved.largest_error = std::max(solved.largest_error, largest_relative_error(ring, solved.exact_sifs));
-    if (gap.aspect_ratio == 1)
+    if (gap.aspect_ratio == 1 && gap.uniform())
       {
         TimerOutput::Scope scope(timer, "axisymmetric model");
         log << "The circle: K_I of the axisymmetric model...\n" << std::flush;

@@ -1,8 +1,9 @@
 // elliptical-gap: one 3D FE solve (distributed) of an elliptical gap under
-// uniform pressure: K_I(phi) at the front points from front-localised
-// J-integrals (signed), beside the Green-Sneddon/Irwin closed form, and for
-// the circle beside the axisymmetric model. PASS when K_I at every front
-// point and ring lies within Verification/Tolerance of the closed form.
+// uniform pressure or a quadratic face traction: K_I(phi) at the front points
+// from front-localised J-integrals (signed), beside the closed form
+// (Green-Sneddon/Irwin, Galin), and for the circle under uniform pressure
+// beside the axisymmetric model. PASS when K_I at every front point and ring
+// lies within Verification/Tolerance of the closed form.
 #include "problems/elliptical_gap.h"
 #include "numerics/relative_error.h"
 #include "output/phase_times.h"
@@ -67,6 +68,8 @@ namespace penny
         summary.add_row({name, Table::Cell(value, format)});
       };
       row("b/a", gap.aspect_ratio, Table::Format{6, false});
+      row("traction x^2 term c_x", gap.x_term, Table::Format{6, false});
+      row("traction y^2 term c_y", gap.y_term, Table::Format{6, false});
       summary.add_row({"cells", solved.n_cells});
       summary.add_row({"DoFs", solved.n_dofs});
       summary.add_row({"degree", degree});
@@ -104,8 +107,10 @@ namespace penny
         const Table front   = front_table(gap, solved);
         const Table summary = summary_table(gap, model.model.degree, solved, timer);
         log << "\nElliptical gap b/a = " << gap.aspect_ratio
-            << " under uniform pressure: K_I(phi) beside p sqrt(pi b)/E(k) (sin^2 phi + (b/a)^2 cos^2 "
-               "phi)^(1/4)\n";
+            << (gap.uniform() ? " under uniform pressure: K_I(phi) beside p sqrt(pi b)/E(k) (sin^2 phi + "
+                                "(b/a)^2 cos^2 phi)^(1/4)\n"
+                              : " under the traction p (1 + c_x x^2/a^2 + c_y y^2/b^2): K_I(phi) beside "
+                                "Galin's closed form\n");
         publish(front, "front.csv", results, log);
         log << '\n';
         publish(summary, "summary.csv", results, log);
@@ -120,7 +125,8 @@ namespace penny
 
   PENNY_REGISTER_SCENE(
       EllipticalGapScene, "elliptical-gap", "",
-      "one 3D FE solve (distributed) of an elliptical gap under uniform pressure: K_I(phi) at the front "
-      "points from front-localised J-integrals (signed), beside the Green-Sneddon/Irwin closed form",
+      "one 3D FE solve (distributed) of an elliptical gap under uniform pressure or a quadratic face "
+      "traction: K_I(phi) at the front points from front-localised J-integrals (signed), beside the "
+      "closed form (Green-Sneddon/Irwin, Galin)",
       "largest relative error of K_I over the front points and rings")
 } // namespace penny
