@@ -32,7 +32,8 @@ for run in (summary_file.parent for summary_file in folder.glob("*/summary.csv")
     summary = {row["quantity"]: row["value"] for row in read_table(run, "summary.csv")}
     rings = [value for key, value in summary.items() if key.startswith("largest K_I relative error")]
     # Uniform pressure first, then by traction, b/a falling, refinements, degree.
-    discretisation = (traction(run) != "uniform", traction(run), -float(parameter(run, "Aspect ratio b/a")),
+    load = traction(run)
+    discretisation = (load != "uniform", load, -float(parameter(run, "Aspect ratio b/a")),
                       int(parameter(run, "Global refinements")), int(parameter(run, "Polynomial degree")))
     runs.append((discretisation, summary, rings))
 if not runs:

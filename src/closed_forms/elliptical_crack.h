@@ -9,7 +9,8 @@
 // the polar angle of that point. The circle b = a gives Sneddon's
 // 2 p sqrt(a/pi), 4 p sqrt(a^2 - r^2)/(pi E') and 16 p a^3/(3 E').
 // K_I follows from w: near the front w ~ (4 K_I/E') sqrt(d/(2 pi)), d the
-// distance from the front.
+// distance from the front. The scenes take GalinSolution below, which for the
+// uniform pressure reduces to this one; this one is the tests' check of it.
 #pragma once
 
 #include <array>
