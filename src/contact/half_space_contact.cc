@@ -46,6 +46,12 @@ namespace penny
       return spacing;
     }
 
+    // A grid's halved or single-precision twin is split as the grid is.
+    SplitTransform split_of(const FourierTransform &transform)
+    {
+      return transform.shares_memory() ? SplitTransform::shared_memory : SplitTransform::fftw_mpi;
+    }
+
     // The first minimum of the energy along g + alpha d (alpha > 0) before
     // clipping at the wall: the elastic part is alpha r.d + alpha^2 d.Kd/2, the
     // interaction continues beyond the wall with the slope it has there, so
@@ -118,8 +124,11 @@ namespace penny
 
   HalfSpaceContact::HalfSpaceContact(const FourierTransform &transform, GridField heights,
                                      const double E_star, const Adhesion &adhesion)
-      : transform_(transform), heights_(std::move(heights)), E_star(E_star), adhesion_(adhesion)
+      : transform_(transform), heights_(std::move(heights)), E_star(E_star), adhesion_(adhesion),
+        single(transform.grid(), transform.planning(), transform.communicator(), split_of(transform))
   {
+    if (single.first_row() != transform.first_row() || single.n_rows() != transform.n_rows())
+      throw std::logic_error("contact solver: the single-precision transform splits the grid differently");
     if (on_any_rank(transform, heights_.size() != transform.n_local_points()))
       throw std::invalid_argument("contact solver: the heights do not match the grid");
     if (on_any_rank(transform, !std::all_of(heights_.begin(), heights_.end(),
@@ -157,26 +166,27 @@ namespace penny
     const PeriodicGrid &grid    = transform.grid();
     const double        q_min   = 2 * M_PI / std::max(grid.nx > 1 ? grid.lx : 0, grid.ny > 1 ? grid.ly : 0);
     const double        modulus = E_star;
-    stiffness =
-        transform.tabulate([=](const Wavevector &q) { return std::complex<double>(modulus / 2 * q.norm()); });
-    compliance = transform.tabulate([=](const Wavevector &q) {
-      return std::complex<double>(2 / (modulus * (q.kx == 0 && q.ky == 0 ? q_min : q.norm())));
-    });
+    const auto          stiffness_of  = [=](const Wavevector &q) { return modulus / 2 * q.norm(); };
+    const auto          compliance_of = [=](const Wavevector &q) {
+      return 2 / (modulus * (q.kx == 0 && q.ky == 0 ? q_min : q.norm()));
+    };
+    stiffness        = transform.tabulate_real(stiffness_of);
+    single_stiffness = single.tabulate_real(stiffness_of);
+    compliance       = single.tabulate_real(compliance_of);
     // The response at the origin to a unit load there, from the rank that holds it.
     GridField impulse(heights_.size(), 0.);
     if (transform.holds_first_row())
       impulse[0] = 1;
-    transform.apply(compliance, impulse, impulse);
+    transform.apply(transform.tabulate(compliance_of), impulse, impulse);
     point_compliance = transform.sum(transform.holds_first_row() ? impulse[0] : 0);
     full_contact     = full_contact_pressure(transform, heights_, E_star);
 
     // The halved problems of nested iteration, built once for every cold start.
     if (const std::optional<PeriodicGrid> grid = halved(transform.grid(), 128); grid && !adhesion.active())
       {
-        coarse_transform = std::make_unique<FourierTransform>(
-            *grid, transform.planning(), transform.communicator(),
-            transform.shares_memory() ? SplitTransform::shared_memory : SplitTransform::fftw_mpi);
-        coarse = std::make_unique<HalfSpaceContact>(
+        coarse_transform = std::make_unique<FourierTransform>(*grid, transform.planning(),
+                                                              transform.communicator(), split_of(transform));
+        coarse           = std::make_unique<HalfSpaceContact>(
             *coarse_transform, resampled(transform, *coarse_transform, heights_), E_star);
       }
   }
@@ -246,10 +256,11 @@ namespace penny
                                              [](double g) { return g >= 0 && std::isfinite(g); })))
       throw std::invalid_argument("contact solver: the initial gap must be finite and >= 0");
 
-    const bool    fixed_load = control == Control::mean_pressure;
-    const bool    adhesive   = adhesion_.active();
-    double *const work       = transform_.work_array();
-    const auto    each_point = [&](auto &&f) { transform_.for_each_point(f); };
+    const bool    fixed_load     = control == Control::mean_pressure;
+    const bool    adhesive       = adhesion_.active();
+    double *const work           = transform_.work_array(); // the gap and K g
+    float *const  preconditioned = single.work_array();     // P_F r and C P_F r, the direction d
+    const auto    each_point     = [&](auto &&f) { transform_.for_each_point(f); };
 
     GridField  gradient(n), previous_gradient(n, 0.), step(n), direction(n, 0.);
     GridField  slope(adhesive ? n : 0); // phi'(g)
@@ -263,12 +274,12 @@ namespace penny
     // At a prescribed mean gap: shift step by a multiple of P_F C P_F 1 so
     // that it keeps the mean of g, and mu and the gradient with it.
     const auto keep_mean_gap = [&]() {
-      each_point([&](const std::size_t i, const std::size_t w) { work[w] = free[i]; });
-      transform_.convolve_work_array(compliance);
+      each_point([&](const std::size_t i, const std::size_t w) { preconditioned[w] = free[i]; });
+      single.convolve_work_array(compliance);
       mean_response.resize(n);
       double step_sum = 0, response_sum = 0;
       each_point([&](const std::size_t i, const std::size_t w) {
-        mean_response[i] = free[i] ? work[w] : 0;
+        mean_response[i] = free[i] ? preconditioned[w] : 0;
         step_sum += step[i];
         response_sum += mean_response[i];
       });
@@ -295,7 +306,7 @@ namespace penny
         direction[i] -= sums[0] / sums[1] * mean_response[i];
     };
 
-    // The direction d = P_F (-step + beta d), copied to the work array, and
+    // The direction d = P_F (-step + beta d), copied to the single-precision array, and
     // r.d over the grid (at a prescribed mean pressure in one pass).
     const auto new_direction = [&](const double beta) {
       double slope_along = 0;
@@ -303,7 +314,7 @@ namespace penny
         each_point([&](const std::size_t i, const std::size_t w) {
           direction[i] = free[i] ? -step[i] + beta * direction[i] : 0;
           slope_along += gradient[i] * direction[i];
-          work[w] = direction[i];
+          preconditioned[w] = direction[i];
         });
       else
         {
@@ -312,7 +323,7 @@ namespace penny
           keep_mean_of_direction();
           each_point([&](const std::size_t i, const std::size_t w) {
             slope_along += gradient[i] * direction[i];
-            work[w] = direction[i];
+            preconditioned[w] = direction[i];
           });
         }
       return transform_.sum(slope_along);
@@ -324,7 +335,7 @@ namespace penny
     for (iteration = 0;; ++iteration)
       {
         // The gradient r = p_fc + K g + mu + phi'(g) from the gap in the work
-        // array, the free set, and P_F r in the work array.
+        // array, the free set, and P_F r in the single-precision array.
         transform_.convolve_work_array(stiffness);
         if (adhesive)
           for (std::size_t i = 0; i < n; ++i)
@@ -344,18 +355,19 @@ namespace penny
             mu              = -sums[0] / sums[1];
           }
         each_point([&](const std::size_t i, const std::size_t w) {
-          gradient[i] = full_contact[i] + work[w] + mu + attraction(i);
-          free[i]     = gap[i] > 0 || gradient[i] < 0;
-          work[w]     = free[i] ? gradient[i] : 0;
+          gradient[i]       = full_contact[i] + work[w] + mu + attraction(i);
+          free[i]           = gap[i] > 0 || gradient[i] < 0;
+          preconditioned[w] = free[i] ? gradient[i] : 0;
         });
-        transform_.convolve_work_array(compliance);
+        single.convolve_work_array(compliance);
         if (!fixed_load)
           {
-            each_point([&](const std::size_t i, const std::size_t w) { step[i] = free[i] ? work[w] : 0; });
+            each_point(
+                [&](const std::size_t i, const std::size_t w) { step[i] = free[i] ? preconditioned[w] : 0; });
             keep_mean_gap();
           }
 
-        // In one pass: the step P_F C P_F r (read from the work array at a
+        // In one pass: the step P_F C P_F r (read from the single-precision array at a
         // prescribed mean pressure); the residual; a point at the wall that
         // pulls away (r < 0) but that the preconditioned step would push into
         // it moves by the local compliance instead, -c r (c the diagonal of
@@ -363,7 +375,7 @@ namespace penny
         // the products of Polak-Ribiere.
         double square = 0, product = 0, previous_overlap = 0;
         each_point([&](const std::size_t i, const std::size_t w) {
-          double s = fixed_load ? (free[i] ? work[w] : 0) : step[i];
+          double s = fixed_load ? (free[i] ? preconditioned[w] : 0) : step[i];
           square += s * s;
           if (free[i] && gap[i] == 0 && s >= 0)
             s = point_compliance * gradient[i];
@@ -386,7 +398,7 @@ namespace penny
         if (!(slope_along < 0))
           slope_along = new_direction(0);
 
-        const double curvature = n_points * transform_.quadratic_form_of_work_array(stiffness);
+        const double curvature = n_points * single.quadratic_form_of_work_array(single_stiffness);
         const double alpha =
             step_length(transform_, adhesion_, slope_along, curvature, gap, direction, slope);
 

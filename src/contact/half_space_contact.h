@@ -117,14 +117,19 @@ namespace penny
     ContactSolution minimise(Control control, double value, const ContactSolverControl &solver,
                              GridField gap) const;
 
-    const FourierTransform    &transform_;
-    GridField                  heights_;
-    double                     E_star;
-    Adhesion                   adhesion_;
-    double                     height_scale; // rms of h about its mean
-    GridField                  full_contact; // p_fc (Pa)
-    FourierTransform::Spectrum stiffness;    // (E*/2) |q|, zero at q = 0
-    FourierTransform::Spectrum compliance;   // its inverse, 2/(E* q_min) at q = 0
+    const FourierTransform          &transform_;
+    GridField                        heights_;
+    double                           E_star;
+    Adhesion                         adhesion_;
+    double                           height_scale; // rms of h about its mean
+    GridField                        full_contact; // p_fc (Pa)
+    FourierTransform::RealMultiplier stiffness;    // (E*/2) |q|, zero at q = 0
+    // The preconditioner C and the curvature d.Kd in single precision, on the
+    // same grid and split: the traction K g, whose rounding would limit the
+    // residual, stays in double.
+    SingleFourierTransform                 single;
+    SingleFourierTransform::RealMultiplier single_stiffness;
+    SingleFourierTransform::RealMultiplier compliance; // 2/(E* |q|), 2/(E* q_min) at q = 0
     double point_compliance; // the diagonal of C: the displacement of a point under its own unit load
     // Without adhesion: the problem on the grid halved in each direction, for
     // nested iteration (none if the grid cannot be halved).

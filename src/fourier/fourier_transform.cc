@@ -61,16 +61,60 @@ namespace penny
       return node_ranks == ranks;
     }
 
+    // FFTW's functions of each precision (fftw_... and fftwf_...).
+    template <typename Real> struct Fftw;
+
+    template <> struct Fftw<double>
+    {
+      using plan                            = fftw_plan;
+      using complex                         = fftw_complex;
+      static constexpr auto alloc_real      = fftw_alloc_real;
+      static constexpr auto alloc_complex   = fftw_alloc_complex;
+      static constexpr auto free            = fftw_free;
+      static constexpr auto plan_r2c_2d     = fftw_plan_dft_r2c_2d;
+      static constexpr auto plan_c2r_2d     = fftw_plan_dft_c2r_2d;
+      static constexpr auto plan_many_r2c   = fftw_plan_many_dft_r2c;
+      static constexpr auto plan_many_c2r   = fftw_plan_many_dft_c2r;
+      static constexpr auto plan_many_dft   = fftw_plan_many_dft;
+      static constexpr auto execute         = fftw_execute;
+      static constexpr auto destroy_plan    = fftw_destroy_plan;
+      static constexpr auto mpi_init        = fftw_mpi_init;
+      static constexpr auto mpi_local_size  = fftw_mpi_local_size_2d_transposed;
+      static constexpr auto mpi_plan_r2c_2d = fftw_mpi_plan_dft_r2c_2d;
+      static constexpr auto mpi_plan_c2r_2d = fftw_mpi_plan_dft_c2r_2d;
+    };
+
+    template <> struct Fftw<float>
+    {
+      using plan                            = fftwf_plan;
+      using complex                         = fftwf_complex;
+      static constexpr auto alloc_real      = fftwf_alloc_real;
+      static constexpr auto alloc_complex   = fftwf_alloc_complex;
+      static constexpr auto free            = fftwf_free;
+      static constexpr auto plan_r2c_2d     = fftwf_plan_dft_r2c_2d;
+      static constexpr auto plan_c2r_2d     = fftwf_plan_dft_c2r_2d;
+      static constexpr auto plan_many_r2c   = fftwf_plan_many_dft_r2c;
+      static constexpr auto plan_many_c2r   = fftwf_plan_many_dft_c2r;
+      static constexpr auto plan_many_dft   = fftwf_plan_many_dft;
+      static constexpr auto execute         = fftwf_execute;
+      static constexpr auto destroy_plan    = fftwf_destroy_plan;
+      static constexpr auto mpi_init        = fftwf_mpi_init;
+      static constexpr auto mpi_local_size  = fftwf_mpi_local_size_2d_transposed;
+      static constexpr auto mpi_plan_r2c_2d = fftwf_mpi_plan_dft_r2c_2d;
+      static constexpr auto mpi_plan_c2r_2d = fftwf_mpi_plan_dft_c2r_2d;
+    };
+
     // A plan of a rank that has nothing to transform is none.
-    void execute(void *const plan)
+    template <typename Real> void execute(void *const plan)
     {
       if (plan)
-        fftw_execute(static_cast<fftw_plan>(plan));
+        Fftw<Real>::execute(static_cast<typename Fftw<Real>::plan>(plan));
     }
   } // namespace
 
-  FourierTransform::FourierTransform(const PeriodicGrid &grid, const Planning planning,
-                                     const MPI_Comm communicator, const SplitTransform how)
+  template <typename Real>
+  BasicFourierTransform<Real>::BasicFourierTransform(const PeriodicGrid &grid, const Planning planning,
+                                                     const MPI_Comm communicator, const SplitTransform how)
       : grid_(grid), planning_(planning), communicator_(communicator), rank_(0), first_row_(0),
         n_rows_(grid.nx), n_coefficients_(std::size_t(grid.nx) * (grid.ny / 2 + 1))
   {
@@ -84,14 +128,16 @@ namespace penny
     // plans; they hold nothing yet.
     const unsigned int flags   = planning == Planning::estimate ? FFTW_ESTIMATE : FFTW_MEASURE;
     const ptrdiff_t    n_lines = grid.ny / 2 + 1;
+    using F                    = Fftw<Real>;
+    using Complex              = typename F::complex;
     row_stride_                = 2 * n_lines;
     if (ranks == 1)
       {
-        real_buffer     = fftw_alloc_real(2 * n_coefficients_);
-        spectrum_buffer = reinterpret_cast<std::complex<double> *>(real_buffer);
-        auto *spectrum  = reinterpret_cast<fftw_complex *>(real_buffer);
-        forward_plan    = fftw_plan_dft_r2c_2d(grid.nx, grid.ny, real_buffer, spectrum, flags);
-        inverse_plan    = fftw_plan_dft_c2r_2d(grid.nx, grid.ny, spectrum, real_buffer, flags);
+        real_buffer     = F::alloc_real(2 * n_coefficients_);
+        spectrum_buffer = reinterpret_cast<std::complex<Real> *>(real_buffer);
+        auto *spectrum  = reinterpret_cast<Complex *>(real_buffer);
+        forward_plan    = F::plan_r2c_2d(grid.nx, grid.ny, real_buffer, spectrum, flags);
+        inverse_plan    = F::plan_c2r_2d(grid.nx, grid.ny, spectrum, real_buffer, flags);
         return;
       }
     MPI_Comm_rank(communicator, &rank_);
@@ -107,36 +153,36 @@ namespace penny
         n_coefficients_ = std::size_t(lines) * grid.nx;
         row_starts      = block_starts(communicator, n_rows_);
         line_starts     = block_starts(communicator, lines);
-        MPI_Win_allocate_shared(MPI_Aint(n_rows_) * row_stride_ * sizeof(double), sizeof(double),
-                                MPI_INFO_NULL, communicator, &real_buffer, &window);
+        MPI_Win_allocate_shared(MPI_Aint(n_rows_) * row_stride_ * sizeof(Real), sizeof(Real), MPI_INFO_NULL,
+                                communicator, &real_buffer, &window);
         MPI_Win_lock_all(MPI_MODE_NOCHECK, window);
         MPI_Aint size;
         int      unit;
-        double  *whole_grid;
+        Real    *whole_grid;
         MPI_Win_shared_query(window, MPI_PROC_NULL, &size, &unit, &whole_grid);
-        spectrum_buffer = reinterpret_cast<std::complex<double> *>(
-            fftw_alloc_complex(std::max<std::size_t>(n_coefficients_, 1)));
-        auto     *rows           = reinterpret_cast<fftw_complex *>(real_buffer);
-        auto     *spectrum       = reinterpret_cast<fftw_complex *>(spectrum_buffer);
-        auto     *lines_in_place = reinterpret_cast<fftw_complex *>(whole_grid) + first_line_;
+        spectrum_buffer = reinterpret_cast<std::complex<Real> *>(
+            F::alloc_complex(std::max<std::size_t>(n_coefficients_, 1)));
+        auto     *rows           = reinterpret_cast<Complex *>(real_buffer);
+        auto     *spectrum       = reinterpret_cast<Complex *>(spectrum_buffer);
+        auto     *lines_in_place = reinterpret_cast<Complex *>(whole_grid) + first_line_;
         const int ny = grid.ny, nx = grid.nx;
         // The rows' transforms along y in place; then each line ky along x,
         // from the rows (n_lines complex values apart) into the spectrum
         // array's line of nx (the transpose done by the transform itself).
         forward_plan = n_rows_ == 0 ? nullptr
-                                    : fftw_plan_many_dft_r2c(1, &ny, n_rows_, real_buffer, nullptr, 1,
-                                                             row_stride_, rows, nullptr, 1, n_lines, flags);
+                                    : F::plan_many_r2c(1, &ny, n_rows_, real_buffer, nullptr, 1, row_stride_,
+                                                       rows, nullptr, 1, n_lines, flags);
         inverse_plan = n_rows_ == 0 ? nullptr
-                                    : fftw_plan_many_dft_c2r(1, &ny, n_rows_, rows, nullptr, 1, n_lines,
-                                                             real_buffer, nullptr, 1, row_stride_, flags);
+                                    : F::plan_many_c2r(1, &ny, n_rows_, rows, nullptr, 1, n_lines,
+                                                       real_buffer, nullptr, 1, row_stride_, flags);
         synchronise();
         if (lines > 0)
           {
-            forward_lines_plan = fftw_plan_many_dft(1, &nx, lines, lines_in_place, nullptr, n_lines, 1,
-                                                    spectrum, nullptr, 1, nx, FFTW_FORWARD, flags);
+            forward_lines_plan = F::plan_many_dft(1, &nx, lines, lines_in_place, nullptr, n_lines, 1,
+                                                  spectrum, nullptr, 1, nx, FFTW_FORWARD, flags);
             inverse_lines_plan =
-                fftw_plan_many_dft(1, &nx, lines, spectrum, nullptr, 1, nx, lines_in_place, nullptr, n_lines,
-                                   1, FFTW_BACKWARD, flags | FFTW_DESTROY_INPUT);
+                F::plan_many_dft(1, &nx, lines, spectrum, nullptr, 1, nx, lines_in_place, nullptr, n_lines, 1,
+                                 FFTW_BACKWARD, flags | FFTW_DESTROY_INPUT);
           }
         synchronise();
         return;
@@ -145,36 +191,36 @@ namespace penny
     // split over the ranks as the omitted transpose left them (which saves
     // two global transposes a convolution). FFTW's MPI planner times
     // collectively, so FFTW_MEASURE picks one algorithm on every rank.
-    static const bool initialised = (fftw_mpi_init(), true);
+    static const bool initialised = (F::mpi_init(), true);
     (void)initialised;
     ptrdiff_t       rows, row, lines, line;
     const ptrdiff_t complex_size =
-        fftw_mpi_local_size_2d_transposed(grid.nx, n_lines, communicator, &rows, &row, &lines, &line);
+        F::mpi_local_size(grid.nx, n_lines, communicator, &rows, &row, &lines, &line);
     first_row_      = rows > 0 ? row : 0;
     n_rows_         = rows;
     first_line_     = lines > 0 ? line : 0;
     n_coefficients_ = std::size_t(lines) * grid.nx;
     row_starts      = block_starts(communicator, n_rows_);
     line_starts     = block_starts(communicator, lines);
-    real_buffer     = fftw_alloc_real(2 * std::max<ptrdiff_t>(complex_size, 1));
-    spectrum_buffer = reinterpret_cast<std::complex<double> *>(real_buffer);
-    auto *spectrum  = reinterpret_cast<fftw_complex *>(real_buffer);
-    forward_plan    = fftw_mpi_plan_dft_r2c_2d(grid.nx, grid.ny, real_buffer, spectrum, communicator,
-                                               flags | FFTW_MPI_TRANSPOSED_OUT);
-    inverse_plan    = fftw_mpi_plan_dft_c2r_2d(grid.nx, grid.ny, spectrum, real_buffer, communicator,
-                                               flags | FFTW_MPI_TRANSPOSED_IN);
+    real_buffer     = F::alloc_real(2 * std::max<ptrdiff_t>(complex_size, 1));
+    spectrum_buffer = reinterpret_cast<std::complex<Real> *>(real_buffer);
+    auto *spectrum  = reinterpret_cast<Complex *>(real_buffer);
+    forward_plan    = F::mpi_plan_r2c_2d(grid.nx, grid.ny, real_buffer, spectrum, communicator,
+                                         flags | FFTW_MPI_TRANSPOSED_OUT);
+    inverse_plan    = F::mpi_plan_c2r_2d(grid.nx, grid.ny, spectrum, real_buffer, communicator,
+                                         flags | FFTW_MPI_TRANSPOSED_IN);
   }
 
-  FourierTransform::~FourierTransform()
+  template <typename Real> BasicFourierTransform<Real>::~BasicFourierTransform()
   {
     for (void *plan : {forward_plan, inverse_plan, forward_lines_plan, inverse_lines_plan})
       if (plan)
-        fftw_destroy_plan(static_cast<fftw_plan>(plan));
+        Fftw<Real>::destroy_plan(static_cast<typename Fftw<Real>::plan>(plan));
     if (!shares_memory())
-      fftw_free(real_buffer);
+      Fftw<Real>::free(real_buffer);
     else
       {
-        fftw_free(spectrum_buffer);
+        Fftw<Real>::free(spectrum_buffer);
         // Freeing the window is collective: while an error unwinds, perhaps on
         // this rank alone, it is left to the end of the run.
         if (std::uncaught_exceptions() == 0)
@@ -186,7 +232,7 @@ namespace penny
   }
 
   // Every rank's writes to the window seen by every rank.
-  void FourierTransform::synchronise() const
+  template <typename Real> void BasicFourierTransform<Real>::synchronise() const
   {
     MPI_Win_sync(window);
     MPI_Barrier(communicator_);
@@ -196,51 +242,53 @@ namespace penny
   // The rows' transforms, then in shared memory the lines', each rank's own;
   // the lines read every rank's rows, so no rank changes its rows before all
   // have read them, nor reads its rows before all have written them.
-  void FourierTransform::transform_forward() const
+  template <typename Real> void BasicFourierTransform<Real>::transform_forward() const
   {
-    execute(forward_plan);
+    execute<Real>(forward_plan);
     if (shares_memory())
       {
         synchronise();
-        execute(forward_lines_plan);
+        execute<Real>(forward_lines_plan);
         synchronise();
       }
   }
 
-  void FourierTransform::transform_inverse() const
+  template <typename Real> void BasicFourierTransform<Real>::transform_inverse() const
   {
     if (shares_memory())
       {
         synchronise();
-        execute(inverse_lines_plan);
+        execute<Real>(inverse_lines_plan);
         synchronise();
       }
-    execute(inverse_plan);
+    execute<Real>(inverse_plan);
   }
 
-  int FourierTransform::n_ranks() const
+  template <typename Real> int BasicFourierTransform<Real>::n_ranks() const
   {
     return split() ? int(row_starts.size()) - 1 : 1;
   }
 
-  std::pair<unsigned int, unsigned int> FourierTransform::rows_of(const int rank) const
+  template <typename Real>
+  std::pair<unsigned int, unsigned int> BasicFourierTransform<Real>::rows_of(const int rank) const
   {
     if (!split())
       return {0, grid_.nx};
     return {row_starts[rank], row_starts[rank + 1] - row_starts[rank]};
   }
 
-  int FourierTransform::row_owner(const unsigned int i) const
+  template <typename Real> int BasicFourierTransform<Real>::row_owner(const unsigned int i) const
   {
     return split() ? owner(row_starts, i) : 0;
   }
 
-  int FourierTransform::line_owner(const unsigned int ky) const
+  template <typename Real> int BasicFourierTransform<Real>::line_owner(const unsigned int ky) const
   {
     return split() ? owner(line_starts, ky) : 0;
   }
 
-  Wavevector FourierTransform::wavevector(const std::size_t coefficient) const
+  template <typename Real>
+  Wavevector BasicFourierTransform<Real>::wavevector(const std::size_t coefficient) const
   {
     if (split())
       return penny::wavevector(grid_, coefficient % grid_.nx, first_line_ + coefficient / grid_.nx);
@@ -248,18 +296,20 @@ namespace penny
     return penny::wavevector(grid_, coefficient / n_y, coefficient % n_y);
   }
 
-  FourierTransform::Spectrum FourierTransform::forward(const GridField &field) const
+  template <typename Real>
+  typename BasicFourierTransform<Real>::Spectrum
+  BasicFourierTransform<Real>::forward(const GridField &field) const
   {
     for_each_point([&](const std::size_t i, const std::size_t w) { real_buffer[w] = field[i]; });
     transform_forward();
-    const double scale = 1. / grid_.n_points();
-    Spectrum     coefficients(spectrum_buffer, spectrum_buffer + n_coefficients_);
+    const Real scale = Real(1) / grid_.n_points();
+    Spectrum   coefficients(spectrum_buffer, spectrum_buffer + n_coefficients_);
     for (auto &c : coefficients)
       c *= scale;
     return coefficients;
   }
 
-  GridField FourierTransform::inverse(const Spectrum &coefficients) const
+  template <typename Real> GridField BasicFourierTransform<Real>::inverse(const Spectrum &coefficients) const
   {
     std::copy(coefficients.begin(), coefficients.end(), spectrum_buffer);
     transform_inverse();
@@ -268,38 +318,60 @@ namespace penny
     return field;
   }
 
-  FourierTransform::Spectrum
-  FourierTransform::tabulate(const std::function<std::complex<double>(const Wavevector &)> &multiplier) const
+  template <typename Real>
+  typename BasicFourierTransform<Real>::Spectrum BasicFourierTransform<Real>::tabulate(
+      const std::function<std::complex<double>(const Wavevector &)> &multiplier) const
   {
     Spectrum table(n_coefficients_);
     for (std::size_t c = 0; c < table.size(); ++c)
-      table[c] = multiplier(wavevector(c));
+      table[c] = std::complex<Real>(multiplier(wavevector(c)));
     return table;
   }
 
-  void FourierTransform::apply(const Spectrum &multiplier, const GridField &in, GridField &out) const
+  template <typename Real>
+  typename BasicFourierTransform<Real>::RealMultiplier BasicFourierTransform<Real>::tabulate_real(
+      const std::function<double(const Wavevector &)> &multiplier) const
+  {
+    RealMultiplier table(n_coefficients_);
+    for (std::size_t c = 0; c < table.size(); ++c)
+      table[c] = Real(multiplier(wavevector(c)));
+    return table;
+  }
+
+  template <typename Real>
+  void BasicFourierTransform<Real>::apply(const Spectrum &multiplier, const GridField &in,
+                                          GridField &out) const
   {
     for_each_point([&](const std::size_t i, const std::size_t w) { real_buffer[w] = in[i]; });
-    convolve_work_array(multiplier);
+    convolve(multiplier);
     out.resize(n_local_points());
     for_each_point([&](const std::size_t i, const std::size_t w) { out[i] = real_buffer[w]; });
   }
 
-  void FourierTransform::convolve_work_array(const Spectrum &multiplier) const
+  template <typename Real>
+  void BasicFourierTransform<Real>::convolve_work_array(const RealMultiplier &multiplier) const
+  {
+    convolve(multiplier);
+  }
+
+  template <typename Real>
+  template <typename Multiplier>
+  void BasicFourierTransform<Real>::convolve(const Multiplier &multiplier) const
   {
     transform_forward();
-    const double          scale    = 1. / grid_.n_points();
-    std::complex<double> *spectrum = spectrum_buffer;
+    const Real          scale    = Real(1) / grid_.n_points();
+    std::complex<Real> *spectrum = spectrum_buffer;
     for (std::size_t c = 0; c < multiplier.size(); ++c)
       spectrum[c] *= scale * multiplier[c];
     transform_inverse();
   }
 
-  double FourierTransform::quadratic_form_of_work_array(const Spectrum &multiplier) const
+  template <typename Real>
+  double BasicFourierTransform<Real>::quadratic_form_of_work_array(const RealMultiplier &multiplier) const
   {
     transform_forward();
-    const std::complex<double> *spectrum = spectrum_buffer;
-    const auto term = [&](const std::size_t c) { return multiplier[c].real() * std::norm(spectrum[c]); };
+    const std::complex<Real> *spectrum = spectrum_buffer;
+    const auto term = [&](const std::size_t c) { return double(multiplier[c]) * std::norm(spectrum[c]); };
     double     sum  = 0;
     for (std::size_t c = 0; c < multiplier.size(); ++c)
       sum += term(c);
@@ -318,26 +390,30 @@ namespace penny
     return this->sum(2 * sum - on_own_lines) * scale * scale;
   }
 
-  double FourierTransform::sum(const double local) const
+  template <typename Real> double BasicFourierTransform<Real>::sum(const double local) const
   {
     double value = local;
     sum_in_place(&value, 1);
     return value;
   }
 
-  void FourierTransform::sum_in_place(double *const values, const int n) const
+  template <typename Real>
+  void BasicFourierTransform<Real>::sum_in_place(double *const values, const int n) const
   {
     if (split())
       MPI_Allreduce(MPI_IN_PLACE, values, n, MPI_DOUBLE, MPI_SUM, communicator_);
   }
 
-  double FourierTransform::minimum(const double local) const
+  template <typename Real> double BasicFourierTransform<Real>::minimum(const double local) const
   {
     double value = local;
     if (split())
       MPI_Allreduce(MPI_IN_PLACE, &value, 1, MPI_DOUBLE, MPI_MIN, communicator_);
     return value;
   }
+
+  template class BasicFourierTransform<double>;
+  template class BasicFourierTransform<float>;
 
   std::complex<double> derivative_factor(const Wavevector &q, const unsigned int order_x,
                                          const unsigned int order_y)

@@ -83,7 +83,10 @@ namespace penny
     fftw_mpi
   };
 
-  // Real-to-complex FFTs (FFTW, r2c/c2r) on one grid. The spectrum holds the
+  // Real-to-complex FFTs (FFTW, r2c/c2r) on one grid, in double precision
+  // (FourierTransform) or single (SingleFourierTransform: half the memory
+  // traffic, for an iterative solver's preconditioner, whose rounding at 1e-7
+  // of its input only perturbs the search directions). The spectrum holds the
   // half plane ky >= 0, nx x (ny/2 + 1) coefficients; the other half is the
   // complex conjugate (Hermitian symmetry of a real field). On one rank the
   // coefficients are in FFTW's layout (kx the slow index). On a communicator
@@ -94,17 +97,20 @@ namespace penny
   // coefficient is. Plans and work arrays belong to the object: it is not
   // thread-safe, and on several ranks every member that transforms or sums
   // is collective.
-  class FourierTransform
+  template <typename Real> class BasicFourierTransform
   {
   public:
-    using Spectrum = std::vector<std::complex<double>>;
+    using Spectrum = std::vector<std::complex<Real>>;
+    // A real multiplier m(q) = m(-q) (a symmetric operator such as the
+    // half-space's stiffness), stored without the imaginary parts.
+    using RealMultiplier = std::vector<Real>;
 
-    explicit FourierTransform(const PeriodicGrid &grid, Planning planning = Planning::estimate,
-                              MPI_Comm       communicator = MPI_COMM_SELF,
-                              SplitTransform how          = SplitTransform::shared_memory);
-    ~FourierTransform();
-    FourierTransform(const FourierTransform &)            = delete;
-    FourierTransform &operator=(const FourierTransform &) = delete;
+    explicit BasicFourierTransform(const PeriodicGrid &grid, Planning planning = Planning::estimate,
+                                   MPI_Comm       communicator = MPI_COMM_SELF,
+                                   SplitTransform how          = SplitTransform::shared_memory);
+    ~BasicFourierTransform();
+    BasicFourierTransform(const BasicFourierTransform &)            = delete;
+    BasicFourierTransform &operator=(const BasicFourierTransform &) = delete;
 
     const PeriodicGrid &grid() const { return grid_; }
     Planning            planning() const { return planning_; }
@@ -145,7 +151,8 @@ namespace penny
 
     // A Fourier multiplier m(q) tabulated once for repeated use, e.g. the
     // half-space compliance 2/(E* |q|) inside the contact solver.
-    Spectrum tabulate(const std::function<std::complex<double>(const Wavevector &)> &multiplier) const;
+    Spectrum       tabulate(const std::function<std::complex<double>(const Wavevector &)> &multiplier) const;
+    RealMultiplier tabulate_real(const std::function<double(const Wavevector &)> &multiplier) const;
     // out = F^-1[m(q) F[in]]; `out` may be `in`.
     void apply(const Spectrum &multiplier, const GridField &in, GridField &out) const;
 
@@ -153,7 +160,7 @@ namespace penny
     // solvers that fill it, convolve and read it back without the two copies
     // of apply(). Its rows are row_stride() = 2 (ny/2 + 1) values apart (FFTW's
     // in-place layout); for_each_point walks them.
-    double     *work_array() const { return real_buffer; }
+    Real       *work_array() const { return real_buffer; }
     std::size_t row_stride() const { return row_stride_; }
     // f(i, w) for each local point: i its index in a GridField, w in the work array.
     template <typename Function> void for_each_point(Function &&f) const
@@ -162,11 +169,11 @@ namespace penny
         for (std::size_t j = 0, w = row * row_stride_; j < grid_.ny; ++j, ++i, ++w)
           f(i, w);
     }
-    void convolve_work_array(const Spectrum &multiplier) const;
+    void convolve_work_array(const RealMultiplier &multiplier) const;
     // sum_q m(q) |f^_q|^2 over the whole spectrum (both halves) of the field f
-    // in the work array, by one r2c transform: for a real even m this is the
-    // mean <f M f> of the operator M = F^-1 m F (Parseval). The work array is lost.
-    double quadratic_form_of_work_array(const Spectrum &multiplier) const;
+    // in the work array, by one r2c transform: the mean <f M f> of the
+    // operator M = F^-1 m F (Parseval). The work array is lost.
+    double quadratic_form_of_work_array(const RealMultiplier &multiplier) const;
 
     // Sums and the least value over the ranks of the communicator of values
     // local to each (the value itself on one rank): the same on every rank.
@@ -199,8 +206,8 @@ namespace penny
     // The work array of this rank's rows, and the spectrum: transformed in
     // place of the rows on one rank and by FFTW's MPI plans, into an array of
     // its own in shared memory.
-    double               *real_buffer;
-    std::complex<double> *spectrum_buffer;
+    Real               *real_buffer;
+    std::complex<Real> *spectrum_buffer;
     // The plans between them; in shared memory those of the rows' transforms
     // along y and of this rank's lines along x, and the window of all ranks'
     // rows, which the lines' transforms read and write in place.
@@ -210,7 +217,12 @@ namespace penny
     void    synchronise() const;
     void    transform_forward() const;
     void    transform_inverse() const;
+    // The work array convolved with a complex or a real multiplier.
+    template <typename Multiplier> void convolve(const Multiplier &multiplier) const;
   };
+
+  using FourierTransform       = BasicFourierTransform<double>;
+  using SingleFourierTransform = BasicFourierTransform<float>;
 
   // The Fourier factor of d^(ox + oy)/dx^ox dy^oy, (i qx)^ox (i qy)^oy, zero
   // on a Nyquist component of odd order (its sine part is not on the grid).
