@@ -20,12 +20,7 @@ out="$(realpath -m "${2:-$root/output/benchmark-elliptical-convergence}")"
 [ -x "$build/penny" ] || { echo "benchmark_elliptical_convergence.sh: no penny in '$build'" >&2; exit 2; }
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mkdir -p "$out"
-# Sets the entry of the shipped scene whose line starts with NAME (after
-# "set ") to VALUE in the run's copy, or stops if there is no such line.
-set_entry() {
-  grep -q "^ *set $1" "$out/$name.prm" || { echo "benchmark_elliptical_convergence.sh: no entry '$1'" >&2; exit 2; }
-  sed -i "\|^ *set $1|s|^\( *set ${1%% =*} *=\).*|\1 $2|" "$out/$name.prm"
-}
+source "$root/postprocess/scene_copy.sh"
 for traction in uniform:0 summit:-0.5; do
   IFS=: read -r load term <<< "$traction"
   for aspect in 1 0.5 0.25 0.1; do
@@ -35,16 +30,11 @@ for traction in uniform:0 summit:-0.5; do
     for discretisation in $discretisations; do
       IFS=: read -r degree refinements solver <<< "$discretisation"
       name="$load-b$aspect-q$degree-r$refinements"
-      cp "$root/prms/elliptical-gap.prm" "$out/$name.prm"
-      set_entry "Aspect ratio b/a" "$aspect"
-      set_entry "Traction x^2 term c_x" "$term"
-      set_entry "Traction y^2 term c_y" "$term"
-      set_entry "Global refinements" "$refinements"
-      set_entry "Polynomial degree" "$degree"
-      set_entry "Type" "$solver"
-      set_entry "Write fields" false
-      set_entry "Tolerance = 1e-4" 1 # the verification's, not the solver's
-      set_entry "Directory" "$out/$name"
+      # "Tolerance = 1e-4" is the verification's, not the solver's.
+      scene_copy "$root/prms/elliptical-gap.prm" "$out/$name.prm" \
+        "Aspect ratio b/a" "$aspect" "Traction x^2 term c_x" "$term" "Traction y^2 term c_y" "$term" \
+        "Global refinements" "$refinements" "Polynomial degree" "$degree" "Type" "$solver" \
+        "Write fields" false "Tolerance = 1e-4" 1 "Directory" "$out/$name"
       echo "== $name ($(date +%T))"
       mpirun -np 2 "$build/penny" "$out/$name.prm" < /dev/null > "$out/$name.log" 2>&1 || {
         echo "benchmark_elliptical_convergence.sh: $name failed:" >&2

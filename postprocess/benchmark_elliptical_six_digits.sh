@@ -20,22 +20,15 @@ out="$(realpath -m "${2:-$root/output/benchmark-elliptical-six-digits}")"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 mkdir -p "$out"
 failed=""
-# Sets the entry of the shipped scene whose line starts with NAME (after
-# "set ") to VALUE in the run's copy, or stops if there is no such line.
-set_entry() {
-  grep -q "^ *set $1" "$out/$name.prm" || { echo "benchmark_elliptical_six_digits.sh: no entry '$1'" >&2; exit 2; }
-  sed -i "\|^ *set $1|s|^\( *set ${1%% =*} *=\).*|\1 $2|" "$out/$name.prm"
-}
+source "$root/postprocess/scene_copy.sh"
 # b/a:front weight half-width:front cell size
 for case in 1:2:1e-6 0.5:2:1e-5 0.25:1:1e-5 0.1:1:1e-5; do
   IFS=: read -r aspect half_width front_cell <<< "$case"
   name="b$aspect"
-  cp "$root/prms/elliptical-gap-six-digits.prm" "$out/$name.prm"
-  set_entry "Aspect ratio b/a" "$aspect"
-  set_entry "Front weight half-width" "$half_width"
-  set_entry "Front cell size" "$front_cell"
-  set_entry "Tolerance = 2e-6" 1 # the verification's, not the solver's
-  set_entry "Directory" "$out/$name"
+  # "Tolerance = 2e-6" is the verification's, not the solver's.
+  scene_copy "$root/prms/elliptical-gap-six-digits.prm" "$out/$name.prm" \
+    "Aspect ratio b/a" "$aspect" "Front weight half-width" "$half_width" "Front cell size" "$front_cell" \
+    "Tolerance = 2e-6" 1 "Directory" "$out/$name"
   echo "== $name ($(date +%T))"
   rm -rf "${out:?}/$name"
   mpirun -np 2 "$build/penny" "$out/$name.prm" < /dev/null > "$out/$name.log" 2>&1 || {
