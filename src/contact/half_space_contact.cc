@@ -127,7 +127,8 @@ namespace penny
       : transform_(transform), heights_(std::move(heights)), E_star(E_star), adhesion_(adhesion),
         single(transform.grid(), transform.planning(), transform.communicator(), split_of(transform))
   {
-    if (single.first_row() != transform.first_row() || single.n_rows() != transform.n_rows())
+    if (on_any_rank(transform,
+                    single.first_row() != transform.first_row() || single.n_rows() != transform.n_rows()))
       throw std::logic_error("contact solver: the single-precision transform splits the grid differently");
     if (on_any_rank(transform, heights_.size() != transform.n_local_points()))
       throw std::invalid_argument("contact solver: the heights do not match the grid");
