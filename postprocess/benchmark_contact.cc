@@ -10,7 +10,8 @@
 // independently) and the cold start, which first solves on the halved grids
 // (iterations on this grid + on the coarser ones in this grid's units, wall
 // time); then the six loads p_bar/sqrt(V) = 3, 2.5, ..., 0.5 as the
-// random-contact scene runs them (load_sweep: each a cold start); and the adhesive solve at 2 sqrt(V) from
+// random-contact scene runs them (load_sweep: each a cold start; the least
+// wall time of three sweeps up to N = 2048, of one beyond); and the adhesive solve at 2 sqrt(V) from
 // the adhesionless one (w, rho with a cohesive zone of lambda0/64, 4 grid spacings at N = 256, and a strength
 // w/rho = sqrt(V)/2).
 //
@@ -27,6 +28,7 @@
 #include "statistics/random_field.h"
 #include "statistics/roughness.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -34,6 +36,7 @@
 #include <cstring>
 #include <exception>
 #include <fstream>
+#include <limits>
 #include <mpi.h>
 #include <stdexcept>
 #include <string>
@@ -195,9 +198,16 @@ int main(int argc, char **argv)
           std::vector<double> loads;
           for (const double ratio : {0.5, 1.0, 1.5, 2.0, 2.5, 3.0})
             loads.push_back(ratio * sqrt_V);
-          const auto   sweep_start      = Clock::now();
-          const auto   steps            = load_sweep(contact, loads, control);
-          const double sweep_time       = seconds_since(sweep_start);
+          // The least time of three sweeps up to 2048^2: other programs on a
+          // shared machine only ever slow a run down.
+          std::vector<LoadStep> steps;
+          double                sweep_time = std::numeric_limits<double>::infinity();
+          for (unsigned int sweep = 0; sweep < (n <= 2048 ? 3u : 1u); ++sweep)
+            {
+              const auto sweep_start = Clock::now();
+              steps                  = load_sweep(contact, loads, control);
+              sweep_time             = std::min(sweep_time, seconds_since(sweep_start));
+            }
           unsigned int sweep_iterations = 0;
           for (const LoadStep &step : steps)
             sweep_iterations += step.iterations;
@@ -229,13 +239,13 @@ int main(int argc, char **argv)
           result("adhesive", 1 - adhesive.contact_fraction, adhesive.mean_gap);
         }
       print("%s",
-            "# iter, time: adhesionless at 2 sqrt(V) from full contact; s/conv: one r2c + c2r pair;\n"
-            "# iter/c: the time of an iteration in convolutions (an iteration does 2.5); old res: the gap "
-            "residual of Polonsky and Keer's definition;\n# cold iter: the cold start's iterations on N^2 + "
-            "on the halved grids in units of N^2 iterations; iter6, time6: the six loads 3 ... 0.5 sqrt(V) "
-            "(load_sweep);\n# iterA, timeA, A_nc: adhesive at 2 sqrt(V) from the adhesionless state; "
-            "MB/rank: the "
-            "largest peak memory of a rank\n");
+            "# iter, time: adhesionless at 2 sqrt(V) from full contact; s/conv: one r2c + c2r pair in double "
+            "precision;\n# iter/c: the time of an iteration in those convolutions (an iteration does 2.5 in "
+            "single precision); old res: the gap residual of Polonsky and Keer's definition;\n# cold iter: "
+            "the cold start's iterations on N^2 + on the halved grids in units of N^2 iterations; iter6, "
+            "time6: the six loads 3 ... 0.5 sqrt(V) (load_sweep; the least time of three sweeps up to "
+            "N = 2048);\n# iterA, timeA, A_nc: adhesive at 2 sqrt(V) from the adhesionless state; MB/rank: "
+            "the largest peak memory of a rank\n");
     }
   catch (const std::exception &error)
     {

@@ -6,7 +6,7 @@
 # planning, split and timed solve the wall time on 1 and 2 ranks and the
 # speed-up against issue 24's target 1.7, and the largest differences of the
 # results between the rank counts (A_nc absolute, the mean gap relative, over
-# every solve). About 4 minutes; timings mean something on an idle machine
+# every solve). About 6 minutes; timings mean something on an idle machine
 # only. Exit status 0 when it ran, whether or not the target is met.
 # Usage, from anywhere: postprocess/benchmark_contact_ranks.sh [BUILD [OUT]]
 # (defaults: build, output/benchmark-contact-ranks, both from the repository root)

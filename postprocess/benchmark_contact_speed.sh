@@ -5,7 +5,7 @@
 # with the load average at its start; then targets.md, the measured values
 # against issue 24's targets (FFTW_MEASURE): the six loads 3 ... 0.5 sqrt(V)
 # of a 2048^2 realisation in at most 15 s, and the iterations at 4096^2 at
-# most 1.3 times those at 512^2. About 12 minutes; timings mean something on
+# most 1.3 times those at 512^2. About 14 minutes; timings mean something on
 # an idle machine only. Exit status 0 when it ran, whether or not the targets
 # are met (targets.md says which).
 # Usage, from anywhere: postprocess/benchmark_contact_speed.sh [BUILD [OUT]]

@@ -34,6 +34,12 @@ namespace penny
       return text;
     }
 
+    // A field kept to single precision: the gradient (computed in double
+    // precision, as a difference of large tractions, and then rounded: the
+    // rounding is relative to the gradient itself), and the step and the
+    // search direction made from the single-precision preconditioner's output.
+    using SingleField = std::vector<float>;
+
     // The largest grid spacing along a direction that has more than one point
     // (an nx x 1 grid is a plane-strain problem: its y spacing means nothing).
     double grid_spacing(const PeriodicGrid &grid)
@@ -64,7 +70,7 @@ namespace penny
     // grid the sum over points is one over ranks: the rank of the first row
     // adds the elastic part.
     double step_length(const FourierTransform &transform, const Adhesion &adhesion, const double slope_along,
-                       const double curvature, const GridField &gap, const GridField &direction,
+                       const double curvature, const GridField &gap, const SingleField &direction,
                        const GridField &slope)
     {
       if (!adhesion.active())
@@ -257,30 +263,41 @@ namespace penny
                                              [](double g) { return g >= 0 && std::isfinite(g); })))
       throw std::invalid_argument("contact solver: the initial gap must be finite and >= 0");
 
-    const bool    fixed_load     = control == Control::mean_pressure;
-    const bool    adhesive       = adhesion_.active();
-    double *const work           = transform_.work_array(); // the gap and K g
-    float *const  preconditioned = single.work_array();     // P_F r and C P_F r, the direction d
-    const auto    each_point     = [&](auto &&f) { transform_.for_each_point(f); };
+    const bool    fixed_load = control == Control::mean_pressure;
+    const bool    adhesive   = adhesion_.active();
+    double *const work       = transform_.work_array(); // the gap and K g, when K g is recomputed
+    // The change of the gap and K of it; P_F r and C P_F r; the direction d.
+    float *const preconditioned = single.work_array();
+    const auto   each_point     = [&](auto &&f) { transform_.for_each_point(f); };
 
-    GridField  gradient(n), previous_gradient(n, 0.), step(n), direction(n, 0.);
-    GridField  slope(adhesive ? n : 0); // phi'(g)
-    const auto attraction = [&](const std::size_t i) { return adhesive ? slope[i] : 0; };
-    GridField  mean_response; // P_F C P_F 1, at a prescribed mean gap
-    // bool, not char: a store through a char may alias anything, and the
-    // compiler would reload every array's address after each one.
-    const std::unique_ptr<bool[]> free(new bool[n]);
-    double                        mu = value;
+    GridField   elastic_traction(n); // p_fc + K g
+    SingleField gradient(n), previous_gradient(n, 0.f), step(n), direction(n, 0.f);
+    GridField   slope(adhesive ? n : 0); // phi'(g)
+    const auto  attraction = [&](const std::size_t i) { return adhesive ? slope[i] : 0; };
+    GridField   mean_response; // P_F C P_F 1, at a prescribed mean gap
+    // Each point held at the wall (g = 0, r >= 0), open (g > 0), or leaving
+    // the wall (g = 0, r < 0); the free set F is the open and leaving points.
+    // An enum, not a char: a store through a char may alias anything, and
+    // the compiler would reload every array's address after each one.
+    enum class Point : unsigned char
+    {
+      held,
+      open,
+      leaving
+    };
+    const std::unique_ptr<Point[]> point(new Point[n]);
+    const auto                     free = [&](const std::size_t i) { return point[i] != Point::held; };
+    double                         mu   = value;
 
     // At a prescribed mean gap: shift step by a multiple of P_F C P_F 1 so
     // that it keeps the mean of g, and mu and the gradient with it.
     const auto keep_mean_gap = [&]() {
-      each_point([&](const std::size_t i, const std::size_t w) { preconditioned[w] = free[i]; });
+      each_point([&](const std::size_t i, const std::size_t w) { preconditioned[w] = free(i); });
       single.convolve_work_array(compliance);
       mean_response.resize(n);
       double step_sum = 0, response_sum = 0;
       each_point([&](const std::size_t i, const std::size_t w) {
-        mean_response[i] = free[i] ? preconditioned[w] : 0;
+        mean_response[i] = free(i) ? preconditioned[w] : 0;
         step_sum += step[i];
         response_sum += mean_response[i];
       });
@@ -313,14 +330,14 @@ namespace penny
       double slope_along = 0;
       if (fixed_load)
         each_point([&](const std::size_t i, const std::size_t w) {
-          direction[i] = free[i] ? -step[i] + beta * direction[i] : 0;
+          direction[i] = free(i) ? -step[i] + beta * direction[i] : 0;
           slope_along += gradient[i] * direction[i];
           preconditioned[w] = direction[i];
         });
       else
         {
           for (std::size_t i = 0; i < n; ++i)
-            direction[i] = free[i] ? -step[i] + beta * direction[i] : 0;
+            direction[i] = free(i) ? -step[i] + beta * direction[i] : 0;
           keep_mean_of_direction();
           each_point([&](const std::size_t i, const std::size_t w) {
             slope_along += gradient[i] * direction[i];
@@ -331,19 +348,30 @@ namespace penny
     };
 
     double       residual = 0, previous_product = 0;
-    unsigned int iteration;
+    unsigned int iteration = 0;
+    // The elastic traction p_fc + K g is updated by K of the gap's change,
+    // transformed in single precision (its rounding relative to the change,
+    // not to K g), and recomputed from the gap in double precision at the
+    // start, after a rescaling of the gaps and before a residual below the
+    // tolerance is believed: the solution's residual is that of K g in double
+    // precision.
+    bool recomputed = true;
     each_point([&](const std::size_t i, const std::size_t w) { work[w] = gap[i]; });
-    for (iteration = 0;; ++iteration)
+    for (;;)
       {
-        // The gradient r = p_fc + K g + mu + phi'(g) from the gap in the work
-        // array, the free set, and P_F r in the single-precision array.
-        transform_.convolve_work_array(stiffness);
+        // The gradient r = p_fc + K g + mu + phi'(g), the free set, and P_F r
+        // in the single-precision array.
+        if (recomputed)
+          transform_.convolve_work_array(stiffness);
+        else
+          single.convolve_work_array(single_stiffness);
         if (adhesive)
           for (std::size_t i = 0; i < n; ++i)
             slope[i] = gap[i] < adhesion_.reach() ? adhesion_.slope(gap[i]) : 0;
         if (iteration == 0 && !fixed_load)
           {
-            // mu starts as the traction that balances the gap points on average.
+            // mu starts as the traction that balances the gap points on average
+            // (K g in the work array: the first iteration recomputes it).
             double sum = 0, count = 0;
             each_point([&](const std::size_t i, const std::size_t w) {
               if (gap[i] > 0)
@@ -356,15 +384,17 @@ namespace penny
             mu              = -sums[0] / sums[1];
           }
         each_point([&](const std::size_t i, const std::size_t w) {
-          gradient[i]       = full_contact[i] + work[w] + mu + attraction(i);
-          free[i]           = gap[i] > 0 || gradient[i] < 0;
-          preconditioned[w] = free[i] ? gradient[i] : 0;
+          elastic_traction[i] =
+              recomputed ? full_contact[i] + work[w] : elastic_traction[i] + preconditioned[w];
+          gradient[i]       = elastic_traction[i] + mu + attraction(i);
+          point[i]          = gap[i] > 0 ? Point::open : gradient[i] < 0 ? Point::leaving : Point::held;
+          preconditioned[w] = free(i) ? gradient[i] : 0;
         });
         single.convolve_work_array(compliance);
         if (!fixed_load)
           {
             each_point(
-                [&](const std::size_t i, const std::size_t w) { step[i] = free[i] ? preconditioned[w] : 0; });
+                [&](const std::size_t i, const std::size_t w) { step[i] = free(i) ? preconditioned[w] : 0; });
             keep_mean_gap();
           }
 
@@ -376,9 +406,9 @@ namespace penny
         // the products of Polak-Ribiere.
         double square = 0, product = 0, previous_overlap = 0;
         each_point([&](const std::size_t i, const std::size_t w) {
-          double s = fixed_load ? (free[i] ? preconditioned[w] : 0) : step[i];
+          double s = fixed_load ? (free(i) ? preconditioned[w] : 0) : step[i];
           square += s * s;
-          if (free[i] && gap[i] == 0 && s >= 0)
+          if (point[i] == Point::leaving && s >= 0)
             s = point_compliance * gradient[i];
           step[i] = s;
           product += gradient[i] * s;
@@ -387,7 +417,14 @@ namespace penny
         const auto sums = transform_.sums(square, product, previous_overlap);
         residual        = std::sqrt(sums[0] / n_points) / height_scale;
         if (residual <= solver.tolerance)
-          break;
+          {
+            if (recomputed)
+              break;
+            // Once more at the same gap, from K g in double precision.
+            recomputed = true;
+            each_point([&](const std::size_t i, const std::size_t w) { work[w] = gap[i]; });
+            continue;
+          }
         if (iteration == solver.max_iterations)
           throw ContactSolverFailure(
               formatted("contact solver: no convergence in %.0f iterations (residual %.3g > tolerance %.3g)",
@@ -404,23 +441,27 @@ namespace penny
             step_length(transform_, adhesion_, slope_along, curvature, gap, direction, slope);
 
         // The step, clipped at the wall (a clipped point forgets its
-        // direction), and the new gap in the work array.
+        // direction), and the gap's change in the single-precision array.
         bool   clipped      = false;
         double smallest_gap = std::numeric_limits<double>::infinity();
         each_point([&](const std::size_t i, const std::size_t w) {
           const double g = gap[i] + alpha * direction[i];
           if (g <= 0)
             {
-              gap[i]       = 0;
-              direction[i] = 0;
-              clipped      = true;
+              preconditioned[w] = -gap[i];
+              gap[i]            = 0;
+              direction[i]      = 0;
+              clipped           = true;
             }
           else
-            gap[i] = g;
+            {
+              preconditioned[w] = g - gap[i];
+              gap[i]            = g;
+            }
           smallest_gap = std::min(smallest_gap, gap[i]);
-          work[w]      = gap[i];
         });
-        if (!fixed_load && on_any_rank(transform_, clipped))
+        recomputed = !fixed_load && on_any_rank(transform_, clipped);
+        if (recomputed)
           {
             const double scale = value / mean(transform_, gap);
             each_point([&](const std::size_t i, const std::size_t w) { work[w] = gap[i] *= scale; });
@@ -432,6 +473,7 @@ namespace penny
                         value));
         std::swap(gradient, previous_gradient);
         previous_product = sums[1];
+        ++iteration;
       }
 
     ContactSolution solution;
@@ -444,8 +486,9 @@ namespace penny
     double elastic = 0, interaction = 0, contact = 0;
     for (std::size_t i = 0; i < n; ++i)
       {
-        solution.pressure[i] = (gap[i] > 0 ? 0 : std::max(gradient[i], 0.)) - attraction(i);
-        elastic += (gap[i] + heights_[i]) * (gradient[i] - mu - attraction(i));
+        solution.pressure[i] =
+            (gap[i] > 0 ? 0 : std::max(elastic_traction[i] + mu + attraction(i), 0.)) - attraction(i);
+        elastic += (gap[i] + heights_[i]) * elastic_traction[i];
         if (adhesive)
           interaction += adhesion_.energy(gap[i]);
         contact += gap[i] == 0;

@@ -124,9 +124,9 @@ namespace penny
     double                           height_scale; // rms of h about its mean
     GridField                        full_contact; // p_fc (Pa)
     FourierTransform::RealMultiplier stiffness;    // (E*/2) |q|, zero at q = 0
-    // The preconditioner C and the curvature d.Kd in single precision, on the
-    // same grid and split: the traction K g, whose rounding would limit the
-    // residual, stays in double.
+    // Single precision, on the same grid and split, for the preconditioner C,
+    // the curvature d.Kd and the updates K (g_new - g) of the traction, which
+    // is recomputed in double precision before a solution is accepted.
     SingleFourierTransform                 single;
     SingleFourierTransform::RealMultiplier single_stiffness;
     SingleFourierTransform::RealMultiplier compliance; // 2/(E* |q|), 2/(E* q_min) at q = 0
