@@ -77,7 +77,7 @@ namespace
   }
 
   // The solver's results on the split grid against those on each rank alone,
-  // to the solver's tolerance: the gaps and pressures within `tolerance` of
+  // to `tolerance` (at least the solver's): the gaps and pressures within it of
   // the rms height and the mean pressure, the scalars within `tolerance`
   // relative, the same points in contact to two and the iterations to one.
   void check_equal(const HalfSpaceContact &split, const ContactSolution &s, const ContactSolution &serial,
