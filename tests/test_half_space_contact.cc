@@ -185,7 +185,8 @@ BOOST_AUTO_TEST_CASE(iterations_do_not_grow_with_the_grid)
       const FourierTransform transform(grid);
       const HalfSpaceContact contact(transform, gaussian_field(transform, spectrum, 7), E_star);
       const double sqrt_V = std::sqrt(lattice_moments(grid, pressure_spectrum(spectrum, E_star)).expected.m0);
-      iterations.push_back(contact.solve(2 * sqrt_V, {1000, 1e-8}, GridField(grid.n_points(), 0.)).iterations);
+      iterations.push_back(
+          contact.solve(2 * sqrt_V, {1000, 1e-8}, GridField(grid.n_points(), 0.)).iterations);
       cold = contact.solve(2 * sqrt_V, {1000, 1e-8});
     }
   BOOST_TEST(iterations[1] <= 1.3 * iterations[0] + 2);
@@ -203,6 +204,18 @@ BOOST_AUTO_TEST_CASE(errors_are_exceptions)
   BOOST_CHECK_EXCEPTION(
       contact.solve(0.3 * p_star, {2, 1e-14}), std::runtime_error, [](const std::runtime_error &e) {
         return std::string(e.what()).find("no convergence in 2 iterations (residual ") != std::string::npos;
+      });
+  // With nested iteration (512 -> 256 -> 128 points) the start on the
+  // coarsest grid fails first, and the message says so, once.
+  const PeriodicGrid     nested_grid{512, 1, lambda, lambda / 512};
+  const FourierTransform nested_transform(nested_grid);
+  const HalfSpaceContact nested(nested_transform, sinusoid(nested_grid), E_star);
+  BOOST_CHECK_EXCEPTION(
+      nested.solve(0.3 * p_star, {2, 1e-14}), ContactSolverFailure, [](const ContactSolverFailure &e) {
+        const std::string message = e.what();
+        const std::size_t grid    = message.find(", on the halved 128 x 1 grid that starts nested iteration");
+        return message.find("no convergence in 2 iterations (residual ") != std::string::npos &&
+               grid != std::string::npos && message.find("halved", grid + 10) == std::string::npos;
       });
   BOOST_CHECK_THROW(contact.solve(-1, {100, 1e-10}), std::invalid_argument);
   BOOST_CHECK_THROW(contact.solve(std::nan(""), {100, 1e-10}), std::invalid_argument);

@@ -27,6 +27,12 @@ namespace penny
       return transform.sum(condition ? 1 : 0) > 0;
     }
 
+    // A failure of the start of nested iteration, named by its grid once.
+    struct StartFailure : ContactSolverFailure
+    {
+      using ContactSolverFailure::ContactSolverFailure;
+    };
+
     std::string formatted(const char *format, const double a, const double b = 0, const double c = 0)
     {
       char text[240];
@@ -213,9 +219,27 @@ namespace penny
         GridField gap = given ? initial_gap : GridField(heights_.size(), 0.);
         return minimise(Control::mean_pressure, mean_pressure, control, std::move(gap));
       }
-    // Only a start: its accuracy beyond the interpolation's is wasted.
-    const ContactSolution start =
-        coarse->solve(mean_pressure, {control.max_iterations, std::max(control.tolerance, 1e-4)});
+    // Only a start: its accuracy beyond the interpolation's is wasted. Its
+    // failure is the halved grid's, with that grid's tolerance.
+    const ContactSolution start = [&] {
+      try
+        {
+          return coarse->solve(mean_pressure, {control.max_iterations, std::max(control.tolerance, 1e-4)});
+        }
+      catch (const StartFailure &)
+        {
+          throw; // from a grid halved further, named there
+        }
+      catch (const ContactSolverFailure &failure)
+        {
+          const PeriodicGrid &grid = coarse_transform->grid();
+          throw StartFailure(
+              failure.what() +
+              formatted(", on the halved %.0f x %.0f grid that starts nested iteration (solved "
+                        "to the larger of the tolerance and 1e-4)",
+                        grid.nx, grid.ny));
+        }
+    }();
     ContactSolution solution   = minimise(Control::mean_pressure, mean_pressure, control,
                                           interpolated(*coarse_transform, start.gap, transform_));
     solution.coarse_iterations = (start.iterations + start.coarse_iterations) *

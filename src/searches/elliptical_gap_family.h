@@ -1,8 +1,8 @@
 // The family of elliptical-gap models indexed by the aspect ratio s = b/a,
 // with a = 1 m: for each s the model is rebuilt (box and mesh scaled with the
 // semi-axes), assembled and preconditioned once, and solved for the three
-// unit tractions 1, x^2 and y^2. The searches of fracture/elliptical_summits.h
-// call it; every evaluation is a full 3D FE model.
+// unit tractions 1, x^2 and y^2. The summit searches (elliptical_summits.h)
+// sample it; every evaluation is a full 3D FE model.
 #pragma once
 
 #include "fe/elliptical_gap_model.h"

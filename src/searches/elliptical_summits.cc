@@ -5,6 +5,7 @@
 
 #include <boost/math/tools/minima.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -13,10 +14,11 @@ namespace penny
 {
   namespace
   {
-    // About 1e-6 in s: far below the FE error of the 3D K_I, each step one 3D model.
-    constexpr int shape_bits = 20;
-    // About 2e-3 in s at the minimum of P(s), where P moves by its square.
-    constexpr int minimum_bits = 10;
+    // The searches run on closed forms and on sampled FE families, where a
+    // step costs no model: the root to about 1e-12 in s, the minimum of P(s)
+    // to Brent's limit, half the mantissa (P moves by its square there).
+    constexpr int shape_bits   = 40;
+    constexpr int minimum_bits = std::numeric_limits<double>::digits / 2;
 
     std::array<EllipticalUnitLoadSifs, 2> front_ends(const EllipticalGapSifs &sifs, const double s)
     {
@@ -35,6 +37,38 @@ namespace penny
     for (const double phi : angles)
       K.push_back({uniform.stress_intensity_factor(phi), xx.stress_intensity_factor(phi),
                    yy.stress_intensity_factor(phi)});
+    return K;
+  }
+
+  SampledGapSifs::SampledGapSifs(const EllipticalGapSifs &sifs, const double smallest_aspect_ratio,
+                                 const unsigned int samples, const std::vector<double> &angles)
+      : log_aspect_ratios(std::log(smallest_aspect_ratio), 0, samples), angles(angles)
+  {
+    for (const double log_s : log_aspect_ratios.nodes())
+      this->samples.push_back(sifs(std::exp(log_s), angles));
+  }
+
+  std::vector<EllipticalUnitLoadSifs> SampledGapSifs::operator()(const double               s,
+                                                                 const std::vector<double> &at) const
+  {
+    const std::vector<double>           c = log_aspect_ratios.cardinal_weights(std::log(s));
+    std::vector<EllipticalUnitLoadSifs> K;
+    for (const double phi : at)
+      {
+        const auto sampled = std::find_if(angles.begin(), angles.end(),
+                                          [phi](const double p) { return std::abs(p - phi) < 1e-12; });
+        if (sampled == angles.end())
+          throw std::invalid_argument("sampled K_I: phi = " + std::to_string(phi) + " was not sampled");
+        const std::size_t      i = sampled - angles.begin();
+        EllipticalUnitLoadSifs k{0, 0, 0};
+        for (unsigned int j = 0; j < c.size(); ++j)
+          {
+            k.uniform += c[j] * samples[j][i].uniform;
+            k.xx += c[j] * samples[j][i].xx;
+            k.yy += c[j] * samples[j][i].yy;
+          }
+        K.push_back(k);
+      }
     return K;
   }
 

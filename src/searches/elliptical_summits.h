@@ -10,8 +10,11 @@
 // K_I is linear in t, and the unit tractions 1, x^2, y^2 on the gap with
 // a = 1 m scale to any a as a^(1/2), a^(5/2), a^(5/2). So every condition is
 // algebra on the unit-load K_I of one shape s, and each search is a 1D search
-// over s: one model (FE or Galin's closed form) per evaluation.
+// over s: on Galin's closed form, or on FE models sampled at a few shapes and
+// interpolated between them (SampledGapSifs).
 #pragma once
+
+#include "numerics/chebyshev_interpolation.h"
 
 #include <array>
 #include <functional>
@@ -35,6 +38,26 @@ namespace penny
   // Galin's closed form (fracture/elliptical_crack.h) of the same.
   std::vector<EllipticalUnitLoadSifs> galin_unit_load_sifs(double                     aspect_ratio,
                                                            const std::vector<double> &angles);
+
+  // The unit-load K_I of a family sampled once, at Chebyshev points in
+  // log(b/a) on [smallest, 1], and interpolated between them, so that a
+  // search step costs no model (the FE models are the samples). K_I is
+  // analytic in log(b/a) (the circle included), so the error falls
+  // geometrically with the samples; the scene measures it on the closed form.
+  class SampledGapSifs
+  {
+  public:
+    SampledGapSifs(const EllipticalGapSifs &sifs, double smallest_aspect_ratio, unsigned int samples,
+                   const std::vector<double> &angles);
+
+    // At `angles`, each one of the sampled angles; s in [smallest, 1].
+    std::vector<EllipticalUnitLoadSifs> operator()(double s, const std::vector<double> &angles) const;
+
+  private:
+    ChebyshevPoints                                  log_aspect_ratios;
+    std::vector<double>                              angles;
+    std::vector<std::vector<EllipticalUnitLoadSifs>> samples; // [point][angle]
+  };
 
   // Without adhesion: the gap of shape s whose ends have K_I = 0 fixes the
   // summit's shape, from two linear equations in (a/Ax)^2 and (a/Ay)^2.
