@@ -410,6 +410,7 @@ BOOST_AUTO_TEST_CASE(chebyshev_interpolation)
   BOOST_TEST(points.nodes().back() == -1.);
   BOOST_TEST(interpolate(quartic, points.nodes()[2]) == quartic(points.nodes()[2]));
   BOOST_CHECK_THROW(points.cardinal_weights(2.001), std::out_of_range);
+  BOOST_TEST(interpolate(quartic, 2 + 1e-15) == quartic(2.)); // beyond the end by rounding: the end
 
   const ChebyshevPoints twelve(0, 1, 12);
   double                largest = 0;

@@ -6,6 +6,7 @@
 // interpolant is given as its cardinal weights.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -28,12 +29,15 @@ namespace penny
     const std::vector<double> &nodes() const { return points; }
 
     // c_j(x), the interpolant at x of the data that are 1 at point j and 0 at
-    // the others: the interpolant of f is sum_j c_j(x) f_j.
-    std::vector<double> cardinal_weights(const double x) const
+    // the others: the interpolant of f is sum_j c_j(x) f_j. An x beyond an
+    // end by rounding (1e-14 of the interval) is taken as that end.
+    std::vector<double> cardinal_weights(double x) const
     {
-      if (!(x >= lo && x <= hi))
+      const double rounding = 1e-14 * (hi - lo);
+      if (!(x >= lo - rounding && x <= hi + rounding))
         throw std::out_of_range("Chebyshev interpolation: " + std::to_string(x) + " lies outside [" +
                                 std::to_string(lo) + ", " + std::to_string(hi) + "]");
+      x                     = std::clamp(x, lo, hi);
       const unsigned int  n = points.size();
       std::vector<double> c(n, 0.);
       double              sum = 0;

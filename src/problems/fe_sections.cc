@@ -33,7 +33,10 @@ namespace penny
                   "evaluated cell by cell without a matrix (degrees p, p-1, ..., 1, Chebyshev smoothing, "
                   "a direct solve at degree 1): the memory of a few vectors, for high degrees.";
         }
-      entries.choice("Type", solver.type, Type::direct, types, help);
+      // In 3D a direct solve at the default degree needs more memory than a
+      // workstation has; the matrix-free solver needs a few vectors.
+      entries.choice("Type", solver.type,
+                     dimension == ModelDimension::three ? Type::cg_multigrid : Type::direct, types, help);
       entries.number("Tolerance", solver.tolerance, 1e-9, interval("(]", 0, 1),
                      "Relative residual |A u - b|/|b| the iterative solver must reach; a direct solve that "
                      "misses it is an error too. Units: none.");

@@ -13,6 +13,7 @@
 #include "fracture/front_stress_intensity.h"
 #include "input/input_error.h"
 #include "numerics/relative_error.h"
+#include "numerics/solver_failure.h"
 #include "output/phase_times.h"
 #include "output/progress.h"
 #include "output/table.h"
@@ -232,12 +233,12 @@ namespace penny
               {
                 solved.sampled_exact.push_back(summit_gaps(sampled, ratio, solved.angles));
               }
-            catch (const std::runtime_error &error)
+            catch (const std::exception &error)
               {
                 throw InputError("Elliptical summits/Shapes sampled = " + std::to_string(shapes_sampled) +
                                  " is too few for Ay/Ax = " + shortest(ratio) +
                                  ": on the closed form sampled so, " + error.what() +
-                                 "; allowed: [2, 64], 14 or more from Ay/Ax = 0.1");
+                                 "; allowed: [2, 64], 14 or more from Ay/Ax = 0.1, 16 from 0.05");
               }
         }
         Progress progress(log, "3D models");
@@ -250,9 +251,34 @@ namespace penny
               state << name << ": b/a = " << s << ", shape " << family.n_models() << " of " << shapes_sampled;
               progress.step(state.str());
             });
+            // A model that fails names its shape and discretisation (a solver's
+            // failure and bad input already name their settings).
             const SampledGapSifs sampled(
-                [&family](const double s, const std::vector<double> &angles) {
-                  return family.unit_load_sifs(s, angles);
+                [&, name = name](const double s, const std::vector<double> &angles) {
+                  try
+                    {
+                      return family.unit_load_sifs(s, angles);
+                    }
+                  catch (const SolverFailure &)
+                    {
+                      throw;
+                    }
+                  catch (const InputError &)
+                    {
+                      throw;
+                    }
+                  catch (const std::exception &error)
+                    {
+                      std::ostringstream what;
+                      what << "the " << name << " model of b/a = " << s << " ("
+                           << discretisation->mesh.cells_along_front << " cells along and "
+                           << discretisation->mesh.cells_around_front
+                           << " around the front) failed: " << error.what()
+                           << "; the mesh may be too coarse for so slender a gap (Elliptical model/Cells "
+                              "along front and "
+                              "Sectors around front; the coarse model halves both)";
+                      throw std::runtime_error(what.str());
+                    }
                 },
                 smallest, shapes_sampled, solved.angles);
             for (const double ratio : solved.tension_aspect_ratios)
