@@ -189,6 +189,25 @@ BOOST_AUTO_TEST_CASE(positive_jacobians_and_box_volume)
     }
 }
 
+// Thinner shells beyond the tube: more cells, the same box, still well shaped.
+BOOST_AUTO_TEST_CASE(finer_outer_shells)
+{
+  EllipticalGapMeshParameters p = small_elliptical_mesh(0.25);
+  Triangulation<3>            standard;
+  make_elliptical_gap_mesh(standard, p);
+  p.outer_shell_aspect = 1.5;
+  Triangulation<3> finer;
+  make_elliptical_gap_mesh(finer, p);
+  BOOST_TEST(finer.n_active_cells() > standard.n_active_cells());
+  const double box           = std::pow(p.domain_width * p.semi_axis_a, 2) * p.domain_height * p.semi_axis_a;
+  const auto [volume, worst] = volume_and_worst_jacobian(finer);
+  BOOST_TEST(volume == box, tt::tolerance(1e-11));
+  BOOST_TEST(worst > 0.1);
+  p.outer_shell_aspect = 0;
+  Triangulation<3> none;
+  BOOST_CHECK_THROW(make_elliptical_gap_mesh(none, p), std::invalid_argument);
+}
+
 BOOST_AUTO_TEST_CASE(boundary_ids_on_their_planes)
 {
   for (const double b_over_a : {1., 0.25})

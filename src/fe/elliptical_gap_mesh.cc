@@ -22,10 +22,9 @@ namespace penny
     // The block around the front in the reference meridian half-plane:
     // 1 - w <= r <= 1 + w, 0 <= theta <= w.
     constexpr double tube_half_width = 0.4;
-    // Radial thickness of a shell over its cells' angular width, inside
-    // r = 1 + w and beyond it; the radius of the innermost sphere.
+    // Radial thickness of a shell over its cells' angular width inside
+    // r = 1 - w (beyond the tube: EllipticalGapMeshParameters).
     constexpr double inner_shell_aspect = 1.5;
-    constexpr double outer_shell_aspect = 3;
     // The angular width that sets the shells' thickness and the rows above the
     // tube: that of the cells along the front, but never below that of 16 of
     // them, so that a finer front adds cells like m^2, not m^3.
@@ -207,7 +206,7 @@ namespace penny
       {
         const double angle   = radial_angle(m);
         const double inner_g = std::exp(inner_shell_aspect * angle);
-        const double outer_g = std::exp(outer_shell_aspect * angle);
+        const double outer_g = std::exp(p.outer_shell_aspect * angle);
         const double w       = tube_half_width;
         check(std::min({box[0], box[1], box[2]}) >= 2 * (1 + w),
               "the box must reach at least 2.8 a along x and y and 2.8 sqrt(a b) along z");
@@ -439,6 +438,7 @@ namespace penny
   void make_elliptical_gap_mesh(Triangulation<3> &triangulation, const EllipticalGapMeshParameters &p)
   {
     check(p.semi_axis_b > 0 && p.semi_axis_a >= p.semi_axis_b, "the semi-axes must satisfy a >= b > 0");
+    check(p.outer_shell_aspect > 0, "outer_shell_aspect must be positive");
     check(p.cells_along_front >= 2 && p.cells_along_front % 2 == 0,
           "cells_along_front must be even and >= 2");
     check(p.cells_around_front >= 4 && p.cells_around_front % 4 == 0,

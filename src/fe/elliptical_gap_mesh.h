@@ -13,8 +13,9 @@
 // the distance growing geometrically): cells
 // grow like the distance from the crack in every direction, so the far field
 // costs few cells and none is a needle. The shells' thickness follows the
-// angular cell width, but stops shrinking past 16 cells along the front, so
-// that a finer front costs cells like m^2. The equator of every shell has
+// angular cell width (times 1.5 below the tube, times `outer_shell_aspect`
+// beyond it), but stops shrinking past 16 cells along the front, so that a
+// finer front costs cells like m^2. The equator of every shell has
 // 2m = `cells_along_front` edges at azimuths psi_e = e pi/(4m), which are
 // the front coordinates of the columns (EllipticalFront::front_coordinate:
 // (1 + a/b)/2 columns per column of even parametric angles at phi = 0, where
@@ -75,6 +76,7 @@ namespace penny
     unsigned int cells_along_front  = 16;   // edges along the quarter front (even)
     unsigned int cells_around_front = 8;    // sectors of the half-plane around the front (multiple of 4)
     double       front_cell_size    = 1e-3; // innermost ring radius / min(b, radius of curvature)
+    double       outer_shell_aspect = 3;    // radial thickness / angular width of the shells beyond the tube
     double       ring_ratio         = 1.6;  // nominal ratio of successive ring radii (the rings fill
                                             // the tube exactly, so the ratio used is close to it)
   };
