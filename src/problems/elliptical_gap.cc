@@ -98,10 +98,10 @@ namespace penny
                      "Nominal ratio of successive ring radii around the front. Units: none.");
       entries.number(
           "Outer shell aspect", mesh.outer_shell_aspect, 3, interval("[]", 1, 6),
-          "Radial thickness over angular width of the cells between the tube around the front and the "
-          "box (the shells grow geometrically; 1.5 costs twice the shells of 3 and lowers K_I's error "
-          "on the long side of a slender gap at degree 4, where the far field's cells limit). Units: "
-          "none.");
+          "Radial thickness over angular width of the shells of cells between the tube around the front "
+          "and the box (they thicken geometrically outwards): 2 costs half again the shells of 3 and "
+          "takes K_I at degree 4 from about 1e-6 to a few 1e-7 (doc/elliptical.md), where the far "
+          "field's cells limit. Units: none.");
       entries.integer(
           "Global refinements", model.model.global_refinements, 0u, 0u, 3u,
           "Uniform refinements of the graded coarse mesh (each multiplies the DoFs by about 8); new front "
