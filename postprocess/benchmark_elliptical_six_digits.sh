@@ -4,7 +4,7 @@
 # 1e-5 x min(b, radius of curvature), outer shells of aspect 2, degree 4,
 # matrix-free CG + p-multigrid to 1e-7) at b/a = 1, 0.5, 0.25 and 0.1, under uniform pressure and under the
 # summits' quadratic tension (against Galin), on 2 MPI ranks without fields; the
-# front weight's half-width 1 below b/a = 0.5 (its bias at phi = 0 grows
+# front weight's half-width 1 at b/a = 0.1 (its bias at phi = 0 grows
 # steeply as b/a falls, postprocess/front_weight_bias.py), the innermost ring
 # 1e-6 for the circle (its uniform error part keeps the circle above 1e-6 at
 # 1e-5); then the table of the largest K_I error on each ring, w(0), the gap
@@ -25,7 +25,7 @@ source "$root/postprocess/scene_copy.sh"
 # The face traction (uniform: Green-Sneddon; summit: p (1 - x^2/(2a^2) - y^2/(2b^2)), Galin), then
 # b/a:front weight half-width:front cell size
 for load in uniform:0 summit:-0.5; do
-  for case in 1:2:1e-6 0.5:2:1e-5 0.25:1:1e-5 0.1:1:1e-5; do
+  for case in 1:2:1e-6 0.5:2:1e-5 0.25:2:1e-5 0.1:1:1e-5; do
     IFS=: read -r traction term <<< "$load"
     IFS=: read -r aspect half_width front_cell <<< "$case"
     name="$traction-b$aspect"

@@ -1,5 +1,5 @@
 // The 3D elliptical-gap model at test size, on 1 or 2 MPI ranks: the front
-// weight of the localised domain integral (its first four moments zero, the
+// weight of the localised domain integral (its moments 1 to 7 zero, the
 // folding at the symmetry planes, its gradient, where its ring edge crosses
 // a cell), one gap under uniform pressure of either sign against
 // Green-Sneddon/Irwin, with its fields; Galin's closed form for quadratic
@@ -73,12 +73,12 @@ namespace
 } // namespace
 
 // The weight is a bump in the front coordinate psi (b/a = 1/2 here), its
-// moments 1 ... 4 in psi zero.
-BOOST_AUTO_TEST_CASE(front_weight_without_its_first_four_moments)
+// moments 1 ... 7 in psi zero.
+BOOST_AUTO_TEST_CASE(front_weight_without_its_moments_1_to_7)
 {
   const double                centre = 0.7, h = 0.3;
   const FrontSegmentExtension q(nearest, front.parametric_angle(centre), h, 0.1);
-  for (const unsigned int power : {0, 1, 2, 3, 4})
+  for (const unsigned int power : {0, 1, 2, 3, 4, 5, 6, 7})
     {
       const double moment = simpson(
           [&](const double psi) {
@@ -86,7 +86,7 @@ BOOST_AUTO_TEST_CASE(front_weight_without_its_first_four_moments)
           },
           centre - h, centre + h);
       if (power == 0)
-        BOOST_TEST(moment == h * 16384. / 45045, tt::tolerance(1e-10)); // int k = 16384/45045 on (-1, 1)
+        BOOST_TEST(moment == h * 65536. / 225225, tt::tolerance(1e-10)); // int k = 65536/225225 on (-1, 1)
       else
         BOOST_TEST(std::abs(moment) < 1e-12);
     }
@@ -196,7 +196,7 @@ BOOST_AUTO_TEST_CASE(uniform_pressure_of_either_sign)
           }
       BOOST_TEST(solved.largest_error < 7e-2);
       // Linear in p: the test-size values of 1 MPa, recorded from one serial run.
-      const std::vector<double> recorded = {710930.02520593582, 833091.33076688903, 972567.87656945223};
+      const std::vector<double> recorded = {712848.33267156419, 832998.51497714, 972282.63027987396};
       for (unsigned int i = 0; i < recorded.size(); ++i)
         BOOST_TEST(solved.signed_sifs.back()[i] == recorded[i] * pressure / 1e6, tt::tolerance(1e-8));
       BOOST_TEST(solved.opening_at_centre == solved.exact_opening_at_centre, tt::tolerance(6e-2));

@@ -12,16 +12,22 @@ namespace penny
 
   namespace
   {
-    // k(t) = (1 - t^2)^4 (1 - 10 t^2 + 17 t^4) on |t| < 1 and its derivative:
-    // int t^2 k dt = int t^4 k dt = 0: the moments int t^2j (1 - t^2)^4 dt are
-    // in the ratios 1, 1/11, 3/143, 1/143, 7/2431 for j = 0 ... 4, and
-    // 1/11 - 10 (3/143) + 17/143 = 0, 3/143 - 10/143 + 17 (7/2431) = 0.
+    // k(t) = (1 - t^2)^4 (1 - 17 t^2 + (323/5) t^4 - (323/5) t^6) on |t| < 1 and
+    // its derivative: int t^2j k dt = 0 for j = 1, 2, 3: the moments
+    // int t^2j (1 - t^2)^4 dt are in the ratios 1, 1/11, 3/143, 1/143, 7/2431,
+    // 63/46189, 3/4199 for j = 0 ... 6, and
+    //   1/11 - 17 (3/143) + (323/5)(1/143 - 7/2431) = 0,
+    //   3/143 - 17/143 + (323/5)(7/2431 - 63/46189) = 0,
+    //   1/143 - 17 (7/2431) + (323/5)(63/46189 - 3/4199) = 0.
     std::pair<double, double> moment_free_bump(const double t)
     {
       if (std::abs(t) >= 1)
         return {0., 0.};
-      const double t2 = t * t, s = 1 - t2, s3 = s * s * s, p = 1 - 10 * t2 + 17 * t2 * t2;
-      return {s3 * s * p, -8 * t * s3 * p + s3 * s * (-20 * t + 68 * t * t2)};
+      constexpr double c  = 323. / 5;
+      const double     t2 = t * t, s = 1 - t2, s3 = s * s * s;
+      const double     p  = 1 - 17 * t2 + c * t2 * t2 * (1 - t2);
+      const double     dp = t * (-34 + c * (4 * t2 - 6 * t2 * t2));
+      return {s3 * s * p, -8 * t * s3 * p + s3 * s * dp};
     }
   } // namespace
 

@@ -10,14 +10,17 @@
 // front coordinate psi (EllipticalFront::front_coordinate, in which the
 // mesh's columns are evenly spaced):
 //
-//   f(phi) = k((psi(phi) - psi_i)/h),   k(t) = (1 - t^2)^4 (1 - 10 t^2 + 17 t^4)  (|t| < 1),
+//   f(phi) = k((psi(phi) - psi_i)/h),
+//   k(t) = (1 - t^2)^4 (1 - 17 t^2 + (323/5) t^4 - (323/5) t^6)  (|t| < 1),
 //
-// whose first four moments vanish. The domain integral then gives the
-// average of G with the weight k((psi - psi_i)/h) |dx/dpsi| dpsi over the
-// front, and that average is G(phi_i) + O(h^6) (the O(h^2) bias of a
-// positive bump, several 1e-3 in G for the slicing of the meshes here, is
-// gone); in psi, where G varies on a scale of order 1 even near phi = 0 of a
-// slender gap, the bias is far smaller than in phi
+// whose moments of orders 1 to 7 vanish (the odd ones by symmetry). The
+// domain integral then gives the average of G with the weight
+// k((psi - psi_i)/h) |dx/dpsi| dpsi over the front, and that average is
+// G(phi_i) + O(h^8) (the O(h^2) bias of a positive bump, several 1e-3 in G for
+// the slicing of the meshes here, is gone, and so is the O(h^6) one of a
+// weight with moments 1 to 5 zero, 3e-6 at b/a = 0.25 over two front cells);
+// in psi, where G varies on a scale of order 1 even near phi = 0 of a slender
+// gap, the bias is far smaller than in phi
 // (postprocess/front_weight_bias.py). The quarter
 // model holds the front 0 <= phi <= pi/2; a weight that reaches past a
 // symmetry plane is folded back (its mirror images about psi = phi = 0 and
