@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The 3D elliptical gap to six digits (issue 26's acceptance): the settings of
 # prms/elliptical-gap-six-digits.prm (far field on the box, innermost ring
-# 1e-5 x min(b, radius of curvature), outer shells of aspect 2, degree 4,
+# 1e-5 x min(b, radius of curvature), outer shells of aspect 2, the front
+# weight with moments up to the seventh zero over two front cells, degree 4,
 # matrix-free CG + p-multigrid to 1e-7) at b/a = 1, 0.5, 0.25 and 0.1, under uniform pressure and under the
 # summits' quadratic tension (against Galin), on 2 MPI ranks without fields; the
 # front weight's half-width 1 at b/a = 0.1 (its bias at phi = 0 grows

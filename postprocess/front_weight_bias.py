@@ -8,9 +8,10 @@ evenly spaced in it), and reports the square root of that average as
 K_I(phi_i). Where K_I varies fast along the front (near phi = 0 of a slender
 ellipse) the average differs from the point value even for the exact field.
 This prints that relative difference for the exact Green-Sneddon/Irwin K_I,
-for the weight in use, k(t) = (1 - t^2)^4 (1 - 17 t^2 + (323/5) t^4 -
-(323/5) t^6) (moments 1 to 7 zero), and, for comparison, the one before it,
-(1 - t^2)^4 (1 - 10 t^2 + 17 t^4) (moments 1 to 5 zero), at the scene's 17
+for the two weights of `Elliptical model/Front weight moments`: 5 (the
+default), k(t) = (1 - t^2)^4 (1 - 10 t^2 + 17 t^4), and 7, (1 - t^2)^4 (1 -
+17 t^2 + (323/5) t^4 - (323/5) t^6), whose moments of orders 1 to 5 and 1 to
+7 vanish, at the scene's 17
 front points (evenly spaced in psi), for the half-widths h = 2 and 1 front
 cells of 16 (h = 2 pi/32 and pi/32), with the weight in the front coordinate
 psi (in use) and, for comparison, in the parametric angle phi (before the
@@ -20,11 +21,11 @@ Usage: /usr/bin/python3 postprocess/front_weight_bias.py"""
 import numpy as np
 
 
-def weight_in_use(t):
+def weight_moments_7(t):
     return np.where(np.abs(t) < 1, (1 - t**2) ** 4 * (1 - 17 * t**2 + 64.6 * t**4 - 64.6 * t**6), 0)
 
 
-def weight_before(t):
+def weight_moments_5(t):
     return np.where(np.abs(t) < 1, (1 - t**2) ** 4 * (1 - 10 * t**2 + 17 * t**4), 0)
 
 
@@ -60,9 +61,9 @@ def parametric_angle(psi, aspect):
     return (lo + hi) / 2
 
 
-print("| weight | in | half-width (front cells of 16) | b/a | largest bias | at phi |")
+print("| moments zero | in | half-width (front cells of 16) | b/a | largest bias | at phi |")
 print("|---|---|---|---|---|---|")
-for name, weight, spacings in (("in use", weight_in_use, ("psi", "phi")), ("before", weight_before, ("psi",))):
+for name, weight, spacings in (("1 to 5", weight_moments_5, ("psi", "phi")), ("1 to 7", weight_moments_7, ("psi",))):
     for spacing in spacings:
         for cells in (2, 1):
             for aspect in (1, 0.5, 0.25, 0.1, 0.05):

@@ -12,22 +12,25 @@ namespace penny
 
   namespace
   {
-    // k(t) = (1 - t^2)^4 (1 - 17 t^2 + (323/5) t^4 - (323/5) t^6) on |t| < 1 and
-    // its derivative: int t^2j k dt = 0 for j = 1, 2, 3: the moments
-    // int t^2j (1 - t^2)^4 dt are in the ratios 1, 1/11, 3/143, 1/143, 7/2431,
-    // 63/46189, 3/4199 for j = 0 ... 6, and
-    //   1/11 - 17 (3/143) + (323/5)(1/143 - 7/2431) = 0,
-    //   3/143 - 17/143 + (323/5)(7/2431 - 63/46189) = 0,
-    //   1/143 - 17 (7/2431) + (323/5)(63/46189 - 3/4199) = 0.
-    std::pair<double, double> moment_free_bump(const double t)
+    // k(t) = (1 - t^2)^4 p(t^2) on |t| < 1 and its derivative, with p such that
+    // the moments of orders 1 to `moments` of k vanish (the odd ones by
+    // symmetry). The moments int t^2j (1 - t^2)^4 dt are in the ratios 1, 1/11,
+    // 3/143, 1/143, 7/2431, 63/46189, 3/4199 for j = 0 ... 6, so that
+    //   moments 5: p(u) = 1 - 10 u + 17 u^2,
+    //     1/11 - 10 (3/143) + 17/143 = 0, 3/143 - 10/143 + 17 (7/2431) = 0;
+    //   moments 7: p(u) = 1 - 17 u + (323/5) u^2 (1 - u),
+    //     1/11 - 17 (3/143) + (323/5)(1/143 - 7/2431) = 0,
+    //     3/143 - 17/143 + (323/5)(7/2431 - 63/46189) = 0,
+    //     1/143 - 17 (7/2431) + (323/5)(63/46189 - 3/4199) = 0.
+    std::pair<double, double> moment_free_bump(const double t, const unsigned int moments)
     {
       if (std::abs(t) >= 1)
         return {0., 0.};
-      constexpr double c  = 323. / 5;
-      const double     t2 = t * t, s = 1 - t2, s3 = s * s * s;
-      const double     p  = 1 - 17 * t2 + c * t2 * t2 * (1 - t2);
-      const double     dp = t * (-34 + c * (4 * t2 - 6 * t2 * t2));
-      return {s3 * s * p, -8 * t * s3 * p + s3 * s * dp};
+      constexpr double c = 323. / 5;
+      const double     u = t * t, s = 1 - u, s3 = s * s * s;
+      const double     p     = moments == 5 ? 1 - 10 * u + 17 * u * u : 1 - 17 * u + c * u * u * (1 - u);
+      const double     dp_du = moments == 5 ? -10 + 34 * u : -17 + c * (2 * u - 3 * u * u);
+      return {s3 * s * p, -8 * t * s3 * p + s3 * s * 2 * t * dp_du};
     }
   } // namespace
 
@@ -52,9 +55,12 @@ namespace penny
 
   FrontSegmentExtension::FrontSegmentExtension(std::shared_ptr<const NearestFrontPoint> nearest,
                                                const double centre, const double half_width,
-                                               const double ring_radius)
-      : nearest(std::move(nearest)), centre(centre), half_width(half_width), rho(ring_radius)
+                                               const unsigned int vanishing_moments, const double ring_radius)
+      : nearest(std::move(nearest)), centre(centre), half_width(half_width), moments(vanishing_moments),
+        rho(ring_radius)
   {
+    if (moments != 5 && moments != 7)
+      throw std::invalid_argument("FrontSegmentExtension: the vanishing moments must be 5 or 7");
     if (!(centre >= 0 && centre <= M_PI / 2))
       throw std::invalid_argument("FrontSegmentExtension: the centre must lie in [0, pi/2]");
     if (!(half_width > 0 && half_width <= M_PI / 2))
@@ -80,7 +86,7 @@ namespace penny
     double f = 0, df = 0;
     for (const auto &[image, sign] : {std::pair{psi, 1.}, std::pair{-psi, -1.}, std::pair{M_PI - psi, -1.}})
       {
-        const auto [k, dk] = moment_free_bump((image - centre_coordinate) / half_width);
+        const auto [k, dk] = moment_free_bump((image - centre_coordinate) / half_width, moments);
         f += k;
         df += sign * dk / half_width * rate;
       }

@@ -10,17 +10,18 @@
 // front coordinate psi (EllipticalFront::front_coordinate, in which the
 // mesh's columns are evenly spaced):
 //
-//   f(phi) = k((psi(phi) - psi_i)/h),
-//   k(t) = (1 - t^2)^4 (1 - 17 t^2 + (323/5) t^4 - (323/5) t^6)  (|t| < 1),
+//   f(phi) = k((psi(phi) - psi_i)/h),   k(t) = (1 - t^2)^4 p(t^2)  (|t| < 1),
 //
-// whose moments of orders 1 to 7 vanish (the odd ones by symmetry). The
-// domain integral then gives the average of G with the weight
+// whose moments of orders 1 to m vanish (the odd ones by symmetry), m = 5 or
+// 7: p(u) = 1 - 10 u + 17 u^2 or 1 - 17 u + (323/5) u^2 (1 - u). The domain
+// integral then gives the average of G with the weight
 // k((psi - psi_i)/h) |dx/dpsi| dpsi over the front, and that average is
-// G(phi_i) + O(h^8) (the O(h^2) bias of a positive bump, several 1e-3 in G for
-// the slicing of the meshes here, is gone, and so is the O(h^6) one of a
-// weight with moments 1 to 5 zero, 3e-6 at b/a = 0.25 over two front cells);
-// in psi, where G varies on a scale of order 1 even near phi = 0 of a slender
-// gap, the bias is far smaller than in phi
+// G(phi_i) + O(h^(m+1)) (the O(h^2) bias of a positive bump, several 1e-3 in
+// G for the slicing of the meshes here, is gone; with m = 7 that of m = 5,
+// 3e-6 at b/a = 0.25 over two front cells, too, but its three sign changes on
+// each side need finer meshes: doc/elliptical.md); in psi, where G varies on
+// a scale of order 1 even near phi = 0 of a slender gap, the bias is far
+// smaller than in phi
 // (postprocess/front_weight_bias.py). The quarter
 // model holds the front 0 <= phi <= pi/2; a weight that reaches past a
 // symmetry plane is folded back (its mirror images about psi = phi = 0 and
@@ -82,10 +83,11 @@ namespace penny
     // (0 <= centre <= pi/2), half-width `half_width` in the front coordinate psi
     // (EllipticalFront::front_coordinate; at most pi/2: then
     // the images about the two symmetry planes are all the folding needs),
-    // ring radius `ring_radius` (m), on the front of `nearest`. Throws
+    // its moments of orders 1 to `vanishing_moments` (5 or 7) zero, ring
+    // radius `ring_radius` (m), on the front of `nearest`. Throws
     // std::invalid_argument out of range.
     FrontSegmentExtension(std::shared_ptr<const NearestFrontPoint> nearest, double centre, double half_width,
-                          double ring_radius);
+                          unsigned int vanishing_moments, double ring_radius);
 
     dealii::Tensor<1, 3> value(const dealii::Point<3> &x) const override;
     dealii::Tensor<2, 3> gradient(const dealii::Point<3> &x) const override;
@@ -105,6 +107,7 @@ namespace penny
     const std::shared_ptr<const NearestFrontPoint> nearest;
     const double                                   centre;
     const double                                   half_width;
+    const unsigned int                             moments;
     const double                                   rho;
     double                                         centre_coordinate; // psi at the centre
     // The parametric angles in [0, pi/2] between which f may not vanish.

@@ -16,20 +16,21 @@ namespace penny
   }
 
   FrontStressIntensity::FrontStressIntensity(const EllipticalGapModel  &model,
-                                             const std::vector<double> &angles, const double half_width_cells,
+                                             const std::vector<double> &angles, const FrontWeight &weight,
                                              const std::vector<double> &ring_radii)
       : j_integral(model.get_system(), model.material().plane_strain_modulus()), angles(angles)
   {
     const auto  &front            = model.front();
     const double front_cells      = model.front_vertex_angles().size() - 1;
     const double curvature_radius = 1 / front.curvature(0);
-    half_width_angle              = half_width_cells * M_PI / (2 * front_cells);
+    half_width_angle              = weight.half_width_cells * M_PI / (2 * front_cells);
     const auto nearest            = std::make_shared<const NearestFrontPoint>(front);
     for (const double rho : ring_radii)
       {
         extensions.emplace_back();
         for (const double phi : angles)
-          extensions.back().emplace_back(nearest, phi, half_width_angle, rho * curvature_radius);
+          extensions.back().emplace_back(nearest, phi, half_width_angle, weight.vanishing_moments,
+                                         rho * curvature_radius);
       }
   }
 

@@ -18,14 +18,21 @@ namespace penny
   // along the front.
   std::vector<double> front_point_angles(unsigned int n, const EllipticalFront &front);
 
+  // The weight along the front of each domain integral (FrontSegmentExtension).
+  struct FrontWeight
+  {
+    double       half_width_cells;  // in front cells of the model's mesh
+    unsigned int vanishing_moments; // its moments of orders 1 to this one vanish: 5 or 7
+  };
+
   class FrontStressIntensity
   {
   public:
-    // Extensions at `angles`, each of half-width `half_width_cells` front
-    // cells of the model's mesh, on every ring of `ring_radii` (in units of
-    // the smallest radius of curvature of the front, b^2/a).
+    // Extensions at `angles`, each with the front weight `weight`, on every
+    // ring of `ring_radii` (in units of the smallest radius of curvature of
+    // the front, b^2/a).
     FrontStressIntensity(const EllipticalGapModel &model, const std::vector<double> &angles,
-                         double half_width_cells, const std::vector<double> &ring_radii);
+                         const FrontWeight &weight, const std::vector<double> &ring_radii);
 
     // Signed K_I (Pa m^1/2) of each load (u under the traction t), per load,
     // ring and point: E' B(u, u_ref)/K_ref with u_ref the displacement under

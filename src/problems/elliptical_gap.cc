@@ -107,17 +107,26 @@ namespace penny
           "Uniform refinements of the graded coarse mesh (each multiplies the DoFs by about 8); new front "
           "points lie on the ellipse. Units: none.");
       entries.number(
-          "Front weight half-width", model.weight_half_width, 2, above(0),
+          "Front weight half-width", model.front_weight.half_width_cells, 2, above(0),
           "Half-width of the weight along the front of each domain integral, in front cells of the refined "
           "mesh: a whole number, so that the weight's support ends on column boundaries (inside a cell the "
           "quadrature misses its end: errors of a few 1e-4 in K_I); up to Cells along front x 2^Global "
           "refinements. Units: front cells.");
       const unsigned int front_cells = model.front_cells();
+      const double       half_width  = model.front_weight.half_width_cells;
       entries.require(
-          model.weight_half_width == std::round(model.weight_half_width) &&
-              model.weight_half_width <= front_cells,
-          "Front weight half-width", model.weight_half_width,
+          half_width == std::round(half_width) && half_width <= front_cells, "Front weight half-width",
+          half_width,
           "{1, 2, ..., Cells along front x 2^Global refinements = " + std::to_string(front_cells) + "}");
+      entries.choice(
+          "Front weight moments", model.front_weight.vanishing_moments, 5u,
+          EnumNames<unsigned int>{{"5", 5u}, {"7", 7u}},
+          "Highest order of the front weight's moments that vanish: 5, the bump (1 - t^2)^4 (1 - 10 t^2 + "
+          "17 t^4), whose bias against the point value falls like h^6 in its half-width h; or 7, (1 - "
+          "t^2)^4 (1 - 17 t^2 + (323/5) t^4 (1 - t^2)), bias h^8 (3e-6 against 6e-8 at b/a = 0.25 over two "
+          "front cells: postprocess/front_weight_bias.py), whose three sign changes on each side need "
+          "finer meshes (at degree 2 with 16 cells along the front the error of K_I is about 10 % larger): "
+          "for six digits. Units: none.");
       entries.numbers("Ring radii", model.ring_radii, {0.1, 0.2, 0.4}, interval("()", 0, 1),
                       "Radii rho of the J-integral tubes around the front, q = (1 - (d/rho)^2)^4 across "
                       "it; below the smallest radius of curvature b^2/a of the front. Units: b^2/a.");
@@ -206,7 +215,7 @@ namespace penny
       const EllipticalGapModel::Traction per_p = [&traction, p](const Point<3> &x) {
         return traction(x) / p;
       };
-      const FrontStressIntensity front(model, solved.angles, settings.weight_half_width, solved.ring_radii);
+      const FrontStressIntensity front(model, solved.angles, settings.front_weight, solved.ring_radii);
       solved.signed_sifs = front.signed_sifs({{&u, &traction}}, reference, per_p).front();
     }
     const double        e_prime = model.material().plane_strain_modulus();

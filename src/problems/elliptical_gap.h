@@ -8,6 +8,7 @@
 
 #include "closed_forms/elliptical_crack.h"
 #include "fe/elliptical_gap_model.h"
+#include "fracture/front_stress_intensity.h"
 #include "input/entries.h"
 #include "output/result_folder.h"
 
@@ -24,8 +25,8 @@ namespace penny
   struct EllipticalModel
   {
     EllipticalGapModelParameters model;
-    double                       weight_half_width; // of the front weight, in front cells
-    std::vector<double>          ring_radii;        // in units of b^2/a
+    FrontWeight                  front_weight;
+    std::vector<double>          ring_radii; // in units of b^2/a
 
     // The model of the gap with semi-axes a and b (m).
     EllipticalGapModelParameters with_semi_axes(double a, double b) const;

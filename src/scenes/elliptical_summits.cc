@@ -167,8 +167,8 @@ namespace penny
                          mesh.cells_around_front,
                          "{8, 16, 24, ..., 64} for this scene (its coarse model halves it)");
         sections.require(
-            model.weight_half_width <= model.front_cells() / 2, "Elliptical model/Front weight half-width",
-            model.weight_half_width,
+            model.front_weight.half_width_cells <= model.front_cells() / 2,
+            "Elliptical model/Front weight half-width", model.front_weight.half_width_cells,
             "(0, Cells along front x 2^Global refinements/2] for this scene (its coarse model halves the "
             "cells)");
       }
@@ -250,7 +250,7 @@ namespace penny
         for (const auto &[discretisation, name, gaps] :
              {std::tuple{&fine, "FE", &solved.fe}, std::tuple{&coarse, "coarse FE", &solved.coarse_fe}})
           {
-            EllipticalGapFamily family(*discretisation, model.weight_half_width, ring, timer);
+            EllipticalGapFamily family(*discretisation, model.front_weight, ring, timer);
             family.observe([&, name = name](const double s) {
               std::ostringstream state;
               state << name << ": b/a = " << s << ", shape " << family.n_models() << " of " << shapes_sampled;

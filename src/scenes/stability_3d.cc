@@ -91,7 +91,7 @@ namespace penny
 
         // 2. Slender gaps: the mesh follows the front's local scale, but the
         //    rings in b^2/a do not (the weight along the front, in psi, is
-        //    biased by at most 4e-5 at b/a = 0.05: front_weight_bias.py).
+        //    biased by at most 5e-4 at b/a = 0.05: front_weight_bias.py).
         for (const double aspect_ratio : {1., 0.5, 0.25, 0.1, 0.05})
           relative(
               "slender gap", setting_text("b/a = ", aspect_ratio),

@@ -7,9 +7,9 @@ namespace penny
   using namespace dealii;
 
   EllipticalGapFamily::EllipticalGapFamily(const EllipticalGapModelParameters &model,
-                                           const double weight_half_width, const double ring_radius,
+                                           const FrontWeight &weight, const double ring_radius,
                                            TimerOutput &timer)
-      : model(model), weight_half_width(weight_half_width), ring_radius(ring_radius), timer(timer)
+      : model(model), weight(weight), ring_radius(ring_radius), timer(timer)
   {
   }
 
@@ -31,7 +31,7 @@ namespace penny
     std::vector<EllipticalUnitLoadSifs> K(angles.size());
     {
       TimerOutput::Scope         scope(timer, "J-integral");
-      const FrontStressIntensity front(gap, angles, weight_half_width, {ring_radius});
+      const FrontStressIntensity front(gap, angles, weight, {ring_radius});
       // One ring: [load][0][point].
       const auto sifs = front.signed_sifs({{&u, &uniform}, {&u_xx, &xx}, {&u_yy, &yy}}, u, uniform);
       for (unsigned int i = 0; i < angles.size(); ++i)

@@ -6,6 +6,7 @@
 #pragma once
 
 #include "fe/elliptical_gap_model.h"
+#include "fracture/front_stress_intensity.h"
 #include "searches/elliptical_summits.h"
 
 #include <deal.II/base/timer.h>
@@ -19,9 +20,9 @@ namespace penny
   {
   public:
     // `model`: the discretisation (its semi-axes are replaced); the front
-    // J-integrals have the weight half-width (front cells) and the ring
-    // radius (in units of b^2/a) of fracture/front_stress_intensity.h.
-    EllipticalGapFamily(const EllipticalGapModelParameters &model, double weight_half_width,
+    // J-integrals have the front weight and the ring radius (in units of
+    // b^2/a) of fracture/front_stress_intensity.h.
+    EllipticalGapFamily(const EllipticalGapModelParameters &model, const FrontWeight &weight,
                         double ring_radius, dealii::TimerOutput &timer);
 
     // Signed K_I of the unit tractions at `angles` on the gap a = 1 m, b = s,
@@ -35,7 +36,7 @@ namespace penny
 
   private:
     const EllipticalGapModelParameters model;
-    const double                       weight_half_width;
+    const FrontWeight                  weight;
     const double                       ring_radius;
     dealii::TimerOutput               &timer;
     unsigned int                       models = 0;
