@@ -11,11 +11,10 @@ This prints that relative difference for the exact Green-Sneddon/Irwin K_I,
 for the two weights of `Elliptical model/Front weight moments`: 5 (the
 default), k(t) = (1 - t^2)^4 (1 - 10 t^2 + 17 t^4), and 7, (1 - t^2)^4 (1 -
 17 t^2 + (323/5) t^4 - (323/5) t^6), whose moments of orders 1 to 5 and 1 to
-7 vanish, at the scene's 17
-front points (evenly spaced in psi), for the half-widths h = 2 and 1 front
-cells of 16 (h = 2 pi/32 and pi/32), with the weight in the front coordinate
-psi (in use) and, for comparison, in the parametric angle phi (before the
-mesh's columns were spaced in psi).
+7 vanish, at the scene's 17 front points (evenly spaced in psi), for the
+half-widths h = 2 and 1 front cells of 16 (h = 2 pi/32 and pi/32), with the
+weight in the front coordinate psi (in use) and, for the default, in the
+parametric angle phi (before the mesh's columns were spaced in psi).
 
 Usage: /usr/bin/python3 postprocess/front_weight_bias.py"""
 import numpy as np
@@ -63,11 +62,13 @@ def parametric_angle(psi, aspect):
 
 print("| moments zero | in | half-width (front cells of 16) | b/a | largest bias | at phi |")
 print("|---|---|---|---|---|---|")
-for name, weight, spacings in (("1 to 5", weight_moments_5, ("psi", "phi")), ("1 to 7", weight_moments_7, ("psi",))):
+WEIGHTS = (("1 to 5", weight_moments_5, ("psi", "phi")), ("1 to 7", weight_moments_7, ("psi",)))
+for name, weight, spacings in WEIGHTS:
     for spacing in spacings:
         for cells in (2, 1):
             for aspect in (1, 0.5, 0.25, 0.1, 0.05):
                 points = [parametric_angle(psi, aspect) for psi in np.linspace(0, np.pi / 2, 17)]
                 biases = [bias(weight, aspect, cells * np.pi / 32, centre, spacing) for centre in points]
                 worst = int(np.argmax(np.abs(biases)))
-                print(f"| {name} | {spacing} | {cells} | {aspect:g} | {biases[worst]:+.1e} | {points[worst]:.2f} |")
+                row = f"| {name} | {spacing} | {cells} | {aspect:g} | {biases[worst]:+.1e} | {points[worst]:.2f} |"
+                print(row)
