@@ -143,6 +143,12 @@ namespace penny
             std::atan2(x[2], advance)};
   }
 
+  bool EllipticalFront::contains(const Point<3> &x) const
+  {
+    return std::abs(x[2]) < 1e-12 * a &&
+           std::abs((x[0] / a) * (x[0] / a) + (x[1] / b) * (x[1] / b) - 1) < 1e-10;
+  }
+
   std::vector<double> front_vertex_angles(const Triangulation<3> &triangulation, const EllipticalFront &front)
   {
     const double        a = front.semi_axis_a(), b = front.semi_axis_b();
@@ -152,8 +158,7 @@ namespace penny
         for (const unsigned int v : cell->vertex_indices())
           {
             const Point<3> &x = cell->vertex(v);
-            if (std::abs(x[2]) < 1e-12 * a &&
-                std::abs((x[0] / a) * (x[0] / a) + (x[1] / b) * (x[1] / b) - 1) < 1e-10)
+            if (front.contains(x))
               local.push_back(std::atan2(x[1] / b, x[0] / a));
           }
     std::vector<double> angles;

@@ -47,6 +47,8 @@ namespace penny
     // The parametric angle phi of front coordinate psi in [-pi/2, pi] (exact
     // at 0 and pi/2).
     double parametric_angle(double psi) const;
+    // Whether x lies on the front, to rounding.
+    bool   contains(const dealii::Point<3> &x) const;
     double semi_axis_a() const { return a; }
     double semi_axis_b() const { return b; }
 

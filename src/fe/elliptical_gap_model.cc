@@ -37,6 +37,22 @@ namespace penny
       TimerOutput::Scope scope(timer, "mesh");
       make_elliptical_gap_mesh(triangulation, model.mesh);
       triangulation.refine_global(model.global_refinements);
+      const EllipticalFront front(model.mesh.semi_axis_a, model.mesh.semi_axis_b);
+      const Point<3>        tip(model.mesh.semi_axis_a, 0, 0);
+      for (unsigned int level = 0; level < model.tip_refinements; ++level)
+        {
+          for (const auto &cell : triangulation.active_cell_iterators())
+            if (cell->is_locally_owned() &&
+                cell->center().distance(tip) < model.tip_refinement_radius * model.mesh.semi_axis_a)
+              {
+                bool touches_front = false;
+                for (const unsigned int v : cell->vertex_indices())
+                  touches_front |= front.contains(cell->vertex(v));
+                if (!touches_front)
+                  cell->set_refine_flag();
+              }
+          triangulation.execute_coarsening_and_refinement();
+        }
       return triangulation;
     }
   } // namespace

@@ -29,7 +29,11 @@ namespace penny
   {
     EllipticalGapMeshParameters mesh;
     unsigned int                global_refinements;
-    FarBoundary                 far_boundary = FarBoundary::free; // on the box's far faces
+    // Then the cells within tip_refinement_radius x a of the tip (a, 0, 0)
+    // that do not touch the front, refined tip_refinements times.
+    unsigned int tip_refinements       = 0;
+    double       tip_refinement_radius = 0;
+    FarBoundary  far_boundary          = FarBoundary::free; // on the box's far faces
   };
 
   class EllipticalGapModel

@@ -74,7 +74,12 @@ namespace penny
       void compute_inverse_diagonal(Vector &inverse) const
       {
         initialize_dof_vector(inverse);
-        add_elastic_diagonal(matrix_free, elasticity, inverse);
+        // Hanging nodes tie DoFs to others, whose diagonal is not the sum of
+        // the cells': deal.II's unit-vector loop resolves them, more slowly.
+        if (matrix_free.get_dof_handler().get_triangulation().has_hanging_nodes())
+          MatrixFreeTools::compute_diagonal(matrix_free, inverse, &ElasticOperator::integrate, this);
+        else
+          add_elastic_diagonal(matrix_free, elasticity, inverse);
         for (const unsigned int i : matrix_free.get_constrained_dofs())
           inverse.local_element(i) = 1;
         // A mapped cell turned inside out at a quadrature point (det J < 0)
