@@ -89,14 +89,18 @@ namespace penny
               [=](Setting &s) { s.model.model.material.poissons_ratio = nu; },
               nu >= 0.45 ? "nu -> 1/2: the volumetric stiffness dominates and low degrees lock" : "");
 
-        // 2. Slender gaps: the mesh follows the front's local scale, but the
-        //    rings in b^2/a do not (the weight along the front, in psi, is
-        //    biased by at most 5e-4 at b/a = 0.05: front_weight_bias.py).
+        // 2. Slender gaps: the light mesh's cells around the tip are coarse
+        //    for its radius of curvature b^2/a, and the rings, sized in
+        //    b^2/a, span few cells (doc/elliptical.md); the weight along the
+        //    front, in psi, is biased by at most 5e-4 at b/a = 0.05
+        //    (front_weight_bias.py).
         for (const double aspect_ratio : {1., 0.5, 0.25, 0.1, 0.05})
           relative(
               "slender gap", setting_text("b/a = ", aspect_ratio),
               [=](Setting &s) { s.gap.aspect_ratio = aspect_ratio; },
-              aspect_ratio < 0.5 ? "slender gap: rings in b^2/a span few cells at phi = pi/2" : "");
+              aspect_ratio < 0.5 ? "slender gap: the cells around the tip are coarse for its radius of "
+                                   "curvature b^2/a, and rings in b^2/a span few cells"
+                                 : "");
 
         // 3. The box: the closed form is for an infinite solid.
         for (const double box : {10., 100., 1000.})
