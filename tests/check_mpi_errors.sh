@@ -6,6 +6,7 @@
 # is the LD_PRELOAD library of write_failure.cc.
 #   - out/ holds a file penny did not write (refused on rank 0, before any solve);
 #   - the disk fills while rank 0 writes the VTU gathered from both ranks;
+#   - a 3D model too large for the memory, refused on both ranks;
 #   - rank 1 alone fails (its own parameter file, bad) while rank 0 waits
 #     for it in a collective operation.
 set -u
@@ -43,6 +44,10 @@ expect_error "holds files penny did not write" -np 2 "$penny" foreign.prm
 
 # The disk fills while rank 0 writes.
 expect_error "No space left on device" -np 2 -x PENNY_TEST_DISK_BYTES=5000 -x LD_PRELOAD="$shim" "$penny" scene.prm
+
+# A 3D model too large for the memory: refused on both ranks before it is refined.
+cp "$(dirname "$scene")/../bad-input/elliptical-too-large.prm" too-large.prm
+expect_error "Global refinements = 3, .* per rank; each rank may use" -np 2 "$penny" too-large.prm
 
 # Rank 1 alone fails: its parameter file (mpirun's MPMD form) holds a bad
 # value, while rank 0 goes on and waits for it in a collective operation.

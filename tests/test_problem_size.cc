@@ -3,10 +3,12 @@
 // degrees of freedom and matrix entries from the cells.
 #define BOOST_TEST_MODULE problem_size
 #define BOOST_TEST_NO_MAIN
+#include "fe/elliptical_gap_model.h"
 #include "fe/penny_gap_mesh.h"
 #include "fe/penny_gap_model.h"
 #include "fe/problem_size.h"
 #include "input/input_error.h"
+#include "problems/elliptical_gap.h"
 #include "test_support.h"
 
 #include <boost/test/unit_test.hpp>
@@ -97,4 +99,78 @@ BOOST_AUTO_TEST_CASE(a_model_too_large_is_refused_before_it_is_built)
   BOOST_CHECK_THROW(check_model_size(model, model_cells(model)), InputError);
   model.mesh.global_refinements = 0;
   BOOST_CHECK_NO_THROW(check_model_size(model, model_cells(model)));
+}
+
+// The 3D estimate from the built model's cells, against its system (the
+// small mesh refined once, about 700 cells): degrees of freedom within 10 %,
+// matrix entries never below and at most 1.6 times above (the estimate's
+// mean couplings are those of a large mesh's interior).
+BOOST_AUTO_TEST_CASE(elliptical_dofs_and_matrix_entries_against_built_systems)
+{
+  for (const unsigned int degree : {1u, 2u})
+    {
+      EllipticalGapModelParameters model;
+      model.mesh               = small_elliptical_mesh(0.5);
+      model.global_refinements = 1;
+      model.degree             = degree;
+      model.material           = {1e9, 0.3};
+      model.linear_solver      = {LinearSolverParameters::Type::cg_amg, 1e-10, 1000};
+      dealii::TimerOutput      timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+      const EllipticalGapModel gap(model, timer);
+      const auto              &system = gap.get_system();
+      const ProblemSize size = elliptical_problem_size(system.get_triangulation().n_global_active_cells(),
+                                                       degree, LinearSolverParameters::Type::cg_amg, 1);
+      const double      dofs = system.get_dof_handler().n_dofs(), entries = system.n_matrix_entries();
+      BOOST_TEST_MESSAGE("degree " << degree << ": DoFs estimate " << size.dofs << ", built " << dofs
+                                   << "; matrix entries estimate " << size.matrix_entries << ", built "
+                                   << entries);
+      BOOST_TEST(size.dofs >= 0.9 * dofs);
+      BOOST_TEST(size.dofs <= 1.1 * dofs);
+      BOOST_TEST(size.matrix_entries >= entries);
+      BOOST_TEST(size.matrix_entries <= 1.6 * entries);
+    }
+}
+
+// The cells known before the mesh is refined: exact for uniform refinement,
+// an upper bound within 50 % with the tip's (the coarse cells that meet its ball count whole).
+BOOST_AUTO_TEST_CASE(elliptical_cells_against_built_meshes)
+{
+  for (const unsigned int tip_refinements : {0u, 1u})
+    {
+      EllipticalGapModelParameters model;
+      model.mesh                  = small_elliptical_mesh(0.25);
+      model.global_refinements    = 1;
+      model.tip_refinements       = tip_refinements;
+      model.tip_refinement_radius = 0.3;
+      model.degree                = 1;
+      model.material              = {1e9, 0.3};
+      model.linear_solver         = {LinearSolverParameters::Type::cg_amg, 1e-10, 1000};
+      dealii::TimerOutput      timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+      const EllipticalGapModel gap(model, timer);
+      const double             built    = gap.get_system().get_triangulation().n_global_active_cells();
+      const double             estimate = elliptical_model_cells(model);
+      BOOST_TEST_MESSAGE(tip_refinements << " tip refinement(s): estimate " << estimate << ", built "
+                                         << built);
+      if (tip_refinements == 0)
+        BOOST_TEST(estimate == built);
+      else
+        {
+          BOOST_TEST(estimate >= built);
+          BOOST_TEST(estimate <= 1.5 * built);
+        }
+    }
+}
+
+// Its cells known before it is refined, and refused on every rank.
+BOOST_AUTO_TEST_CASE(an_elliptical_model_too_large_is_refused_before_it_is_refined)
+{
+  EllipticalGapModelParameters model;
+  model.mesh               = small_elliptical_mesh(0.5);
+  model.global_refinements = 6;
+  model.degree             = 4;
+  model.material           = {1e9, 0.3};
+  model.linear_solver      = {LinearSolverParameters::Type::cg_multigrid, 1e-10, 1000};
+  BOOST_CHECK_THROW(check_elliptical_model_size(model), InputError);
+  model.global_refinements = 1;
+  BOOST_CHECK_NO_THROW(check_elliptical_model_size(model));
 }

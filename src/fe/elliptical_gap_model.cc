@@ -7,6 +7,9 @@
 #include <deal.II/base/quadrature_lib.h>
 #include <deal.II/fe/fe_values.h>
 
+#include <algorithm>
+#include <cmath>
+
 namespace penny
 {
   using namespace dealii;
@@ -30,6 +33,12 @@ namespace penny
       return conditions;
     }
 
+    bool near_tip(const TriaAccessor<3, 3, 3> &cell, const EllipticalGapModelParameters &model)
+    {
+      const Point<3> tip(model.mesh.semi_axis_a, 0, 0);
+      return cell.center().distance(tip) < model.tip_refinement_radius * model.mesh.semi_axis_a;
+    }
+
     // Meshed and refined before the system distributes its degrees of freedom on it.
     const Triangulation<3> &meshed(Triangulation<3> &triangulation, const EllipticalGapModelParameters &model,
                                    TimerOutput &timer)
@@ -38,12 +47,10 @@ namespace penny
       make_elliptical_gap_mesh(triangulation, model.mesh);
       triangulation.refine_global(model.global_refinements);
       const EllipticalFront front(model.mesh.semi_axis_a, model.mesh.semi_axis_b);
-      const Point<3>        tip(model.mesh.semi_axis_a, 0, 0);
       for (unsigned int level = 0; level < model.tip_refinements; ++level)
         {
           for (const auto &cell : triangulation.active_cell_iterators())
-            if (cell->is_locally_owned() &&
-                cell->center().distance(tip) < model.tip_refinement_radius * model.mesh.semi_axis_a)
+            if (cell->is_locally_owned() && near_tip(*cell, model))
               {
                 bool touches_front = false;
                 for (const unsigned int v : cell->vertex_indices())
@@ -56,6 +63,26 @@ namespace penny
       return triangulation;
     }
   } // namespace
+
+  double elliptical_model_cells(const EllipticalGapModelParameters &parameters)
+  {
+    Triangulation<3> coarse;
+    make_elliptical_gap_mesh(coarse, parameters.mesh);
+    // A coarse cell whose box meets the ball may have children in it.
+    const Point<3> tip(parameters.mesh.semi_axis_a, 0, 0);
+    double         cells = 0;
+    for (const auto &cell : coarse.active_cell_iterators())
+      {
+        const BoundingBox<3> box = cell->bounding_box();
+        Point<3>             nearest;
+        for (unsigned int d = 0; d < 3; ++d)
+          nearest[d] = std::clamp(tip[d], box.lower_bound(d), box.upper_bound(d));
+        const bool meets_ball =
+            nearest.distance(tip) < parameters.tip_refinement_radius * parameters.mesh.semi_axis_a;
+        cells += std::pow(8., parameters.global_refinements + (meets_ball ? parameters.tip_refinements : 0));
+      }
+    return cells;
+  }
 
   EllipticalGapModel::EllipticalGapModel(const EllipticalGapModelParameters &parameters, TimerOutput &timer)
       : parameters(parameters), timer(timer), triangulation(MPI_COMM_WORLD),

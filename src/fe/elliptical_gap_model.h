@@ -36,6 +36,12 @@ namespace penny
     FarBoundary  far_boundary          = FarBoundary::free; // on the box's far faces
   };
 
+  // The active cells of the model, known from its coarse mesh before it is
+  // refined: each refinement makes a cell 8, and the coarse cells that meet
+  // the ball of the tip refinements are refined again that many times (an
+  // upper bound, but for the cells the refinement's balance adds).
+  double elliptical_model_cells(const EllipticalGapModelParameters &parameters);
+
   class EllipticalGapModel
   {
   public:

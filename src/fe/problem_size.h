@@ -1,4 +1,4 @@
-// How large a 2D model will be, known before it is built: the degrees of
+// How large a model will be, known before it is built: the degrees of
 // freedom, matrix entries and memory that follow from its cells, and the
 // memory this run can get. A model that would not fit is refused with one
 // line naming the entries that make it large, instead of ending in
@@ -18,11 +18,16 @@ namespace penny
     double cells;
     double dofs;
     double matrix_entries;
-    double bytes; // all ranks together, with the factorisation of the direct solver
+    double bytes; // on the rank that needs most, with the factorisation of the direct solver
   };
 
+  // The 2D (axisymmetric or periodic) model on n_ranks.
   ProblemSize problem_size(double cells, unsigned int degree, LinearSolverParameters::Type solver,
                            unsigned int n_ranks);
+
+  // The 3D elliptical model, distributed over n_ranks.
+  ProblemSize elliptical_problem_size(double cells, unsigned int degree, LinearSolverParameters::Type solver,
+                                      unsigned int n_ranks);
 
   // The memory this run can get (bytes): MemAvailable of /proc/meminfo, the
   // free part of the cgroup's limit and of RLIMIT_AS, whichever is least.

@@ -1,6 +1,7 @@
 #include "problems/elliptical_gap.h"
 
 #include "closed_forms/elliptical_crack.h"
+#include "fe/problem_size.h"
 #include "fracture/front_stress_intensity.h"
 #include "numerics/relative_error.h"
 #include "output/elliptical_fields.h"
@@ -180,6 +181,19 @@ namespace penny
     });
   }
 
+  void check_elliptical_model_size(const EllipticalGapModelParameters &model)
+  {
+    std::ostringstream entries;
+    entries << "Elliptical model/Global refinements = " << model.global_refinements
+            << ", Tip refinements = " << model.tip_refinements
+            << ", Finite element/Polynomial degree = " << model.degree
+            << ", Linear solver/Type: " << solver_name(model.linear_solver, MPI_COMM_WORLD);
+    check_problem_size(elliptical_problem_size(elliptical_model_cells(model), model.degree,
+                                               model.linear_solver.type,
+                                               Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)),
+                       entries.str(), MPI_COMM_WORLD);
+  }
+
   QuadraticTraction EllipticalGap::traction() const
   {
     const double a = semi_axis_a, b = aspect_ratio * semi_axis_a;
@@ -198,8 +212,9 @@ namespace penny
                                                   const ResultFolder *fields)
   {
     log << "Building the quarter model of the gap b/a = " << gap.aspect_ratio << "...\n" << std::flush;
-    EllipticalGapModel model(settings.with_semi_axes(gap.semi_axis_a, gap.aspect_ratio * gap.semi_axis_a),
-                             timer);
+    const auto parameters = settings.with_semi_axes(gap.semi_axis_a, gap.aspect_ratio * gap.semi_axis_a);
+    check_elliptical_model_size(parameters);
+    EllipticalGapModel model(parameters, timer);
     const auto        &system = model.get_system();
     log << system.get_triangulation().n_global_active_cells() << " cells, "
         << system.get_dof_handler().n_dofs() << " DoFs, " << Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)

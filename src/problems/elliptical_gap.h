@@ -52,6 +52,10 @@ namespace penny
     QuadraticTraction traction() const;
   };
 
+  // Refuses, on every rank and before it is refined, a model the memory of
+  // this machine cannot hold, naming the entries that make it large.
+  void check_elliptical_model_size(const EllipticalGapModelParameters &model);
+
   // Elliptical gap; its front points must fall on the vertices of `model`'s
   // front, so it is read after elliptical_model_sections.
   void elliptical_gap_section(Sections &sections, EllipticalGap &gap, const EllipticalModel &model);
