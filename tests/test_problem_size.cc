@@ -161,6 +161,23 @@ BOOST_AUTO_TEST_CASE(elliptical_cells_against_built_meshes)
     }
 }
 
+// The coarse mesh's cells counted without building it, against the built
+// mesh: the default one and a fine web around a slender front.
+BOOST_AUTO_TEST_CASE(elliptical_coarse_cells_counted)
+{
+  EllipticalGapMeshParameters fine_web;
+  fine_web.semi_axis_b        = 0.1;
+  fine_web.cells_along_front  = 24;
+  fine_web.cells_around_front = 12;
+  fine_web.ring_ratio         = 1.3;
+  for (const auto &mesh : {EllipticalGapMeshParameters(), fine_web})
+    {
+      dealii::Triangulation<3> built;
+      make_elliptical_gap_mesh(built, mesh);
+      BOOST_TEST(elliptical_gap_mesh_cells(mesh) == built.n_active_cells());
+    }
+}
+
 // Its cells known before it is refined, and refused on every rank.
 BOOST_AUTO_TEST_CASE(an_elliptical_model_too_large_is_refused_before_it_is_refined)
 {

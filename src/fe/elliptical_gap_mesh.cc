@@ -435,14 +435,36 @@ namespace penny
     return radii;
   }
 
+  namespace
+  {
+    void check_parameters(const EllipticalGapMeshParameters &p)
+    {
+      check(p.semi_axis_b > 0 && p.semi_axis_a >= p.semi_axis_b, "the semi-axes must satisfy a >= b > 0");
+      check(p.outer_shell_aspect > 0, "outer_shell_aspect must be positive");
+      check(p.cells_along_front >= 2 && p.cells_along_front % 2 == 0,
+            "cells_along_front must be even and >= 2");
+      check(p.cells_around_front >= 4 && p.cells_around_front % 4 == 0,
+            "cells_around_front must be a multiple of 4");
+    }
+  } // namespace
+
+  // The loops of make_elliptical_gap_mesh, counted: the core cube, the
+  // shells (their X and Y patches less the web's block, and the Z patch),
+  // and the web's kites and rings on every column.
+  double elliptical_gap_mesh_cells(const EllipticalGapMeshParameters &p)
+  {
+    check_parameters(p);
+    const ReferenceOctant octant(p);
+    const double          m = octant.m, rows = octant.rows, sectors = octant.sectors;
+    const double          n_rings     = octant.rings[0].size() - 1;
+    const double          tube_shells = octant.tube_outer - octant.tube_inner;
+    return rows * m * m + octant.n_shells * (2 * m * rows + m * m) - tube_shells * 2 * m * octant.tube_rows +
+           2 * m * (sectors / 2 + n_rings * sectors);
+  }
+
   void make_elliptical_gap_mesh(Triangulation<3> &triangulation, const EllipticalGapMeshParameters &p)
   {
-    check(p.semi_axis_b > 0 && p.semi_axis_a >= p.semi_axis_b, "the semi-axes must satisfy a >= b > 0");
-    check(p.outer_shell_aspect > 0, "outer_shell_aspect must be positive");
-    check(p.cells_along_front >= 2 && p.cells_along_front % 2 == 0,
-          "cells_along_front must be even and >= 2");
-    check(p.cells_around_front >= 4 && p.cells_around_front % 4 == 0,
-          "cells_around_front must be a multiple of 4");
+    check_parameters(p);
     const ReferenceOctant octant(p);
     const unsigned int    m = octant.m, rows = octant.rows;
     const auto            flat  = numbers::flat_manifold_id;

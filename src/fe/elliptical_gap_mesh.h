@@ -93,6 +93,10 @@ namespace penny
   void make_elliptical_gap_mesh(dealii::Triangulation<3>          &triangulation,
                                 const EllipticalGapMeshParameters &p);
 
+  // The cells make_elliptical_gap_mesh would build, counted without building
+  // them (a fine web can hold millions).
+  double elliptical_gap_mesh_cells(const EllipticalGapMeshParameters &p);
+
   // Radii of the rings around the front in the reference meridian plane of
   // each column e = 0 ... cells_along_front (front coordinate e pi/(2
   // cells_along_front)), from the innermost to the tube boundary (0.4), the

@@ -66,6 +66,11 @@ namespace penny
 
   double elliptical_model_cells(const EllipticalGapModelParameters &parameters)
   {
+    // Counted, not built, when no tip refinement needs the cells' places or
+    // when building the coarse mesh would already take gigabytes.
+    const double coarse_cells = elliptical_gap_mesh_cells(parameters.mesh);
+    if (parameters.tip_refinements == 0 || coarse_cells > 1e6)
+      return coarse_cells * std::pow(8., parameters.global_refinements + parameters.tip_refinements);
     Triangulation<3> coarse;
     make_elliptical_gap_mesh(coarse, parameters.mesh);
     // A coarse cell whose box meets the ball may have children in it.

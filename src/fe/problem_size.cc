@@ -86,26 +86,28 @@ namespace penny
     return size;
   }
 
-  double available_memory()
+  double available_memory(const unsigned int sharing)
   {
-    double        available = std::numeric_limits<double>::infinity();
+    double        machine = std::numeric_limits<double>::infinity();
     std::string   key;
     double        value;
     std::string   unit;
     std::ifstream meminfo("/proc/meminfo");
     while (meminfo >> key >> value >> unit)
       if (key == "MemAvailable:")
-        available = value * 1024;
+        machine = value * 1024;
     // cgroup v2: the limit and what the group uses now.
     std::ifstream limit_file("/sys/fs/cgroup/memory.max"), usage_file("/sys/fs/cgroup/memory.current");
     double        limit, usage;
     if (limit_file >> limit && usage_file >> usage)
-      available = std::min(available, std::max(0., limit - usage));
-    // The address space left: the limit less what the process maps already.
+      machine = std::min(machine, std::max(0., limit - usage));
+    // The address space left: the limit (each process its own) less what
+    // the process maps already.
+    double own = std::numeric_limits<double>::infinity();
     rlimit address_space;
     if (getrlimit(RLIMIT_AS, &address_space) == 0 && address_space.rlim_cur != RLIM_INFINITY)
-      available = std::min(available, std::max(0., double(address_space.rlim_cur) - mapped_memory()));
-    return available;
+      own = std::max(0., double(address_space.rlim_cur) - mapped_memory());
+    return std::min(machine / sharing, own);
   }
 
   double mapped_memory()
@@ -120,8 +122,11 @@ namespace penny
   {
     // Every rank of the run on this machine builds its model at the same time.
     const unsigned int sharing = ranks_on_this_machine();
-    const double       budget =
-        dealii::Utilities::MPI::broadcast(communicator, memory_share * available_memory() / sharing, 0);
+    // Libraries allocate later what no estimate counts (OpenBLAS's buffers:
+    // 128 MB on its first product).
+    constexpr double library_reserve = 256. * 1024 * 1024;
+    const double     budget          = dealii::Utilities::MPI::broadcast(
+                     communicator, memory_share * std::max(0., available_memory(sharing) - library_reserve), 0);
     if (size.bytes <= budget)
       return;
     const auto gib = [](const double bytes) {

@@ -29,9 +29,11 @@ namespace penny
   ProblemSize elliptical_problem_size(double cells, unsigned int degree, LinearSolverParameters::Type solver,
                                       unsigned int n_ranks);
 
-  // The memory this run can get (bytes): MemAvailable of /proc/meminfo, the
-  // free part of the cgroup's limit and of RLIMIT_AS, whichever is least.
-  double available_memory();
+  // The memory a process of this run can get (bytes): MemAvailable of
+  // /proc/meminfo and the free part of the cgroup's limit, shared by
+  // `sharing` processes, or the free part of its own RLIMIT_AS, whichever is
+  // least.
+  double available_memory(unsigned int sharing = 1);
 
   // The address space this process maps now (bytes).
   double mapped_memory();
@@ -40,8 +42,9 @@ namespace penny
   constexpr double memory_share = 0.75;
 
   // Throws InputError, naming `entries`, if `size` (per rank) needs more than
-  // memory_share of the available memory over the ranks of the run on this
-  // machine, which build their models at the same time. Collective on
+  // memory_share of the memory available to each rank of the run on this
+  // machine (they build their models at the same time), less a reserve for
+  // the libraries. Collective on
   // `communicator`: its rank 0 decides.
   void check_problem_size(const ProblemSize &size, const std::string &entries, MPI_Comm communicator);
 } // namespace penny

@@ -184,7 +184,11 @@ namespace penny
   void check_elliptical_model_size(const EllipticalGapModelParameters &model)
   {
     std::ostringstream entries;
-    entries << "Elliptical model/Global refinements = " << model.global_refinements
+    entries << "Elliptical model/Cells along front = " << model.mesh.cells_along_front
+            << ", Sectors around front = " << model.mesh.cells_around_front
+            << ", Front cell size = " << model.mesh.front_cell_size
+            << ", Ring ratio = " << model.mesh.ring_ratio
+            << ", Global refinements = " << model.global_refinements
             << ", Tip refinements = " << model.tip_refinements
             << ", Finite element/Polynomial degree = " << model.degree
             << ", Linear solver/Type: " << solver_name(model.linear_solver, MPI_COMM_WORLD);

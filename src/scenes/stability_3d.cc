@@ -4,6 +4,7 @@
 // against the direct solver. K_I at every front point and ring is held to
 // Green-Sneddon/Irwin; each case passes, or is flagged with the reason it is
 // expected to miss, or fails the scene. Each model is shared by all ranks.
+#include "input/input_error.h"
 #include "numerics/relative_error.h"
 #include "problems/elliptical_gap.h"
 #include "problems/stability_cases.h"
@@ -35,6 +36,26 @@ namespace penny
       TimerOutput        timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
       std::ostringstream model_log; // the cases' progress is the scene's log
       return measure_elliptical_gap(setting.model, setting.gap, timer, model_log, nullptr);
+    }
+
+    // The slender gaps' aspect ratios and the boxes (R/a = H/a) of the cases.
+    const std::vector<double> aspect_ratios = {1., 0.5, 0.25, 0.1, 0.05};
+    const std::vector<double> boxes         = {10., 100., 1000.};
+
+    // Refuses, before any case is solved, a case's model too large for the
+    // memory, naming the case.
+    void check_size(Setting setting, const std::string &name, const std::function<void(Setting &)> &modify)
+    {
+      modify(setting);
+      try
+        {
+          check_elliptical_model_size(setting.model.with_semi_axes(
+              setting.gap.semi_axis_a, setting.gap.aspect_ratio * setting.gap.semi_axis_a));
+        }
+      catch (const InputError &error)
+        {
+          throw InputError("the case " + name + ": " + error.what());
+        }
     }
 
     StabilityOutcome outcome(const EllipticalGapMeasurement &solved, const double error,
@@ -70,8 +91,20 @@ namespace penny
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        const Setting              base   = setting;
-        const double               target = target_accuracy;
+        const Setting base   = setting;
+        const double  target = target_accuracy;
+        // The largest models: the slenderest gap (the most rings), the
+        // largest box (the most shells), the solver case's direct and AMG.
+        using Type = LinearSolverParameters::Type;
+        check_size(base, setting_text("slender gap b/a = ", aspect_ratios.back()),
+                   [](Setting &s) { s.gap.aspect_ratio = aspect_ratios.back(); });
+        check_size(base, setting_text("box R/a = H/a = ", boxes.back()), [](Setting &s) {
+          s.model.model.mesh.domain_width = s.model.model.mesh.domain_height = boxes.back();
+        });
+        for (const auto &[type, name] :
+             {std::pair{Type::direct, "direct"}, std::pair{Type::cg_amg, "CG + AMG"}})
+          check_size(base, std::string("solvers, ") + name,
+                     [type = type](Setting &s) { s.model.model.linear_solver.type = type; });
         std::vector<StabilityCase> cases;
         const auto                 relative = [&](const std::string &name, const std::string &text,
                                   const std::function<void(Setting &)> &modify, const std::string &miss) {
@@ -94,7 +127,7 @@ namespace penny
         //    b^2/a, span few cells (doc/elliptical.md); the weight along the
         //    front, in psi, is biased by at most 5e-4 at b/a = 0.05
         //    (front_weight_bias.py).
-        for (const double aspect_ratio : {1., 0.5, 0.25, 0.1, 0.05})
+        for (const double aspect_ratio : aspect_ratios)
           relative(
               "slender gap", setting_text("b/a = ", aspect_ratio),
               [=](Setting &s) { s.gap.aspect_ratio = aspect_ratio; },
@@ -103,7 +136,7 @@ namespace penny
                                  : "");
 
         // 3. The box: the closed form is for an infinite solid.
-        for (const double box : {10., 100., 1000.})
+        for (const double box : boxes)
           relative(
               "box", setting_text("R/a = H/a = ", box),
               [=](Setting &s) {
