@@ -101,6 +101,20 @@ BOOST_AUTO_TEST_CASE(a_model_too_large_is_refused_before_it_is_built)
   BOOST_CHECK_NO_THROW(check_model_size(model, model_cells(model)));
 }
 
+namespace
+{
+  // The small elliptical model (test_support.h) of degree p, on CG with AMG.
+  EllipticalGapModelParameters small_elliptical_model(const double b_over_a, const unsigned int degree)
+  {
+    EllipticalGapModelParameters model;
+    model.mesh          = small_elliptical_mesh(b_over_a);
+    model.degree        = degree;
+    model.material      = {1e9, 0.3};
+    model.linear_solver = {LinearSolverParameters::Type::cg_amg, 1e-10, 1000};
+    return model;
+  }
+} // namespace
+
 // The 3D estimate from the built model's cells, against its system (the
 // small mesh refined once, about 700 cells): degrees of freedom within 10 %,
 // matrix entries never below and at most 1.6 times above (the estimate's
@@ -109,12 +123,8 @@ BOOST_AUTO_TEST_CASE(elliptical_dofs_and_matrix_entries_against_built_systems)
 {
   for (const unsigned int degree : {1u, 2u})
     {
-      EllipticalGapModelParameters model;
-      model.mesh               = small_elliptical_mesh(0.5);
-      model.global_refinements = 1;
-      model.degree             = degree;
-      model.material           = {1e9, 0.3};
-      model.linear_solver      = {LinearSolverParameters::Type::cg_amg, 1e-10, 1000};
+      EllipticalGapModelParameters model = small_elliptical_model(0.5, degree);
+      model.global_refinements           = 1;
       dealii::TimerOutput      timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
       const EllipticalGapModel gap(model, timer);
       const auto              &system = gap.get_system();
@@ -137,14 +147,10 @@ BOOST_AUTO_TEST_CASE(elliptical_cells_against_built_meshes)
 {
   for (const unsigned int tip_refinements : {0u, 1u})
     {
-      EllipticalGapModelParameters model;
-      model.mesh                  = small_elliptical_mesh(0.25);
-      model.global_refinements    = 1;
-      model.tip_refinements       = tip_refinements;
-      model.tip_refinement_radius = 0.3;
-      model.degree                = 1;
-      model.material              = {1e9, 0.3};
-      model.linear_solver         = {LinearSolverParameters::Type::cg_amg, 1e-10, 1000};
+      EllipticalGapModelParameters model = small_elliptical_model(0.25, 1);
+      model.global_refinements           = 1;
+      model.tip_refinements              = tip_refinements;
+      model.tip_refinement_radius        = 0.3;
       dealii::TimerOutput      timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
       const EllipticalGapModel gap(model, timer);
       const double             built    = gap.get_system().get_triangulation().n_global_active_cells();
@@ -181,12 +187,9 @@ BOOST_AUTO_TEST_CASE(elliptical_coarse_cells_counted)
 // Its cells known before it is refined, and refused on every rank.
 BOOST_AUTO_TEST_CASE(an_elliptical_model_too_large_is_refused_before_it_is_refined)
 {
-  EllipticalGapModelParameters model;
-  model.mesh               = small_elliptical_mesh(0.5);
-  model.global_refinements = 6;
-  model.degree             = 4;
-  model.material           = {1e9, 0.3};
-  model.linear_solver      = {LinearSolverParameters::Type::cg_multigrid, 1e-10, 1000};
+  EllipticalGapModelParameters model = small_elliptical_model(0.5, 4);
+  model.linear_solver.type           = LinearSolverParameters::Type::cg_multigrid;
+  model.global_refinements           = 6;
   BOOST_CHECK_THROW(check_elliptical_model_size(model), InputError);
   model.global_refinements = 1;
   BOOST_CHECK_NO_THROW(check_elliptical_model_size(model));
