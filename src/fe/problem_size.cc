@@ -45,9 +45,9 @@ namespace penny
     return size;
   }
 
-  // Calibrated on the elliptical model (b/a = 0.5 to 0.1, degrees 1 to 5,
-  // 5472 to 43776 cells, peak resident size less the 170 MB of a run that
-  // builds nothing; the estimate lies up to 50 % above): Q_p with three
+  // Calibrated on the elliptical model (b/a = 0.5 to 0.1, degrees 1 to 5, 5472
+  // to 43776 cells, peak resident size less the 170 MB of a run that builds
+  // nothing; the estimate lies from 5 % below to 50 % above): Q_p with three
   // components has 3 p^2 (p + 0.18) degrees of freedom per cell, and a row of
   // the matrix couples 3 (p + 2)^3 entries (the mean over vertex, edge, face
   // and interior nodes). Per matrix entry 55 bytes with CG and AMG (its
@@ -55,8 +55,8 @@ namespace penny
   // fill, 110 N^(4/3) bytes for N DoFs (nested dissection in 3D; CHOLMOD, 2e4
   // to 1.4e5 DoFs, degrees 1 and 2). Matrix-free p-multigrid holds no matrix
   // but its levels' mapping data, 400 + 2000/p bytes per DoF, and the direct
-  // solver of its degree-1 level. The triangulation adds about 3 kB per
-  // cell, spread over the ranks like the rest.
+  // solver of its degree-1 level. The triangulation adds about 3 kB per cell,
+  // spread over the ranks like the rest.
   ProblemSize elliptical_problem_size(const double cells, const unsigned int degree,
                                       const LinearSolverParameters::Type solver, const unsigned int n_ranks)
   {
