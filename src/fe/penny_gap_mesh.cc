@@ -160,7 +160,7 @@ namespace penny
         const std::filesystem::path msh_file = std::filesystem::path(folder) / "mesh.msh";
         const std::filesystem::path log_file = std::filesystem::path(folder) / "gmsh.log";
         // The child's address space: what it inherits, and what the run may use.
-        const double limit = mapped_memory() + memory_share * available_memory();
+        const double limit = mapped_memory() + memory_share * available_memory().bytes;
         std::cout.flush();
         const pid_t parent = getpid();
         const pid_t child  = fork();

@@ -86,7 +86,7 @@ namespace penny
     return size;
   }
 
-  double available_memory(const unsigned int sharing)
+  AvailableMemory available_memory(const unsigned int sharing)
   {
     double        machine = std::numeric_limits<double>::infinity();
     std::string   key;
@@ -99,15 +99,23 @@ namespace penny
     // cgroup v2: the limit and what the group uses now.
     std::ifstream limit_file("/sys/fs/cgroup/memory.max"), usage_file("/sys/fs/cgroup/memory.current");
     double        limit, usage;
-    if (limit_file >> limit && usage_file >> usage)
-      machine = std::min(machine, std::max(0., limit - usage));
+    std::string   machine_limit = "the machine's available memory";
+    if (limit_file >> limit && usage_file >> usage && limit - usage < machine)
+      {
+        machine       = std::max(0., limit - usage);
+        machine_limit = "the free part of the cgroup's memory limit";
+      }
+    if (sharing > 1)
+      machine_limit += ", shared by " + std::to_string(sharing) + " ranks";
     // The address space left: the limit (each process its own) less what
     // the process maps already.
     double own = std::numeric_limits<double>::infinity();
     rlimit address_space;
     if (getrlimit(RLIMIT_AS, &address_space) == 0 && address_space.rlim_cur != RLIM_INFINITY)
       own = std::max(0., double(address_space.rlim_cur) - mapped_memory());
-    return std::min(machine / sharing, own);
+    if (own < machine / sharing)
+      return {own, "the free part of each process's address-space limit (ulimit -v)"};
+    return {machine / sharing, machine_limit};
   }
 
   double mapped_memory()
@@ -125,8 +133,10 @@ namespace penny
     // Libraries allocate later what no estimate counts (OpenBLAS's buffers:
     // 128 MB on its first product).
     constexpr double library_reserve = 256. * 1024 * 1024;
-    const double     budget          = dealii::Utilities::MPI::broadcast(
-                     communicator, memory_share * std::max(0., available_memory(sharing) - library_reserve), 0);
+    // Rank 0 decides for all; the limit named is each rank's own.
+    const AvailableMemory available = available_memory(sharing);
+    const double          budget    = dealii::Utilities::MPI::broadcast(
+                    communicator, memory_share * std::max(0., available.bytes - library_reserve), 0);
     if (size.bytes <= budget)
       return;
     const auto gib = [](const double bytes) {
@@ -139,8 +149,8 @@ namespace penny
     message.precision(2);
     message << entries << ": about " << size.cells << " cells, " << size.dofs << " degrees of freedom and "
             << gib(size.bytes) << (sharing > 1 ? " per rank; each rank" : "; this run") << " may use "
-            << gib(budget) << " (" << memory_share * 100 << " % of the memory available"
-            << (sharing > 1 ? ", shared by " + std::to_string(sharing) + " ranks" : "") << ")";
+            << gib(budget) << " (" << memory_share * 100 << " % of " << available.limit << ", after "
+            << gib(library_reserve) << " for the libraries)";
     throw InputError(message.str());
   }
 } // namespace penny

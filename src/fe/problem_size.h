@@ -29,11 +29,15 @@ namespace penny
   ProblemSize elliptical_problem_size(double cells, unsigned int degree, LinearSolverParameters::Type solver,
                                       unsigned int n_ranks);
 
-  // The memory a process of this run can get (bytes): MemAvailable of
-  // /proc/meminfo and the free part of the cgroup's limit, shared by
-  // `sharing` processes, or the free part of its own RLIMIT_AS, whichever is
-  // least.
-  double available_memory(unsigned int sharing = 1);
+  // The memory a process of this run can get: MemAvailable of /proc/meminfo
+  // and the free part of the cgroup's limit, shared by `sharing` processes,
+  // or the free part of its own RLIMIT_AS, whichever is least.
+  struct AvailableMemory
+  {
+    double      bytes;
+    std::string limit; // which of them binds, for messages
+  };
+  AvailableMemory available_memory(unsigned int sharing = 1);
 
   // The address space this process maps now (bytes).
   double mapped_memory();

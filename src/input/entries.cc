@@ -279,8 +279,8 @@ namespace penny
       penny::require(ok, name(entry), value, range);
   }
 
-  Sections::Sections(ParameterHandler &prm, const bool reading, std::string folder)
-      : prm(prm), reading_(reading), folder(std::move(folder))
+  Sections::Sections(ParameterHandler &prm, const bool reading, std::string folder, const bool checks)
+      : prm(prm), reading_(reading), folder(std::move(folder)), checks(checks)
   {
   }
 
@@ -309,7 +309,7 @@ namespace penny
 
   void Sections::check(const std::function<void()> &check) const
   {
-    if (reading_)
+    if (reading_ && checks)
       check();
   }
 

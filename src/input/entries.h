@@ -155,8 +155,9 @@ namespace penny
   class Sections
   {
   public:
-    // `folder`: where relative file names start (the parameter file's folder).
-    Sections(dealii::ParameterHandler &prm, bool reading, std::string folder = "");
+    // `folder`: where relative file names start (the parameter file's folder);
+    // `checks`: whether check() runs its checks when reading.
+    Sections(dealii::ParameterHandler &prm, bool reading, std::string folder = "", bool checks = true);
 
     // The entries of `subsection`, listed by `list`.
     void subsection(const std::string &subsection, const std::function<void(Entries &)> &list);
@@ -179,18 +180,22 @@ namespace penny
     dealii::ParameterHandler &prm;
     const bool                reading_;
     const std::string         folder;
+    const bool                checks;
     std::vector<std::string>  files;
   };
 
   // The values a list of subsections holds at the defaults of its entries:
   // `list(sections, values)` declared, then read, with no file in between.
+  // Its checks (Sections::check) do not run: some judge the run, not the
+  // entries (a model's size against the memory), and the caller checks the
+  // values it goes on to use.
   template <typename Values, typename List> Values default_values(List &&list)
   {
     dealii::ParameterHandler prm;
     Values                   values{};
     Sections                 declaring(prm, false);
     list(declaring, values);
-    Sections reading(prm, true);
+    Sections reading(prm, true, "", false);
     list(reading, values);
     return values;
   }

@@ -15,6 +15,7 @@
 #include <algorithm>
 #include <cmath>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 namespace penny
@@ -31,10 +32,9 @@ namespace penny
       return Utilities::MPI::sum(static_cast<double>(stats.VmHWM), communicator) / 1024;
     }
 
-    // K_I of the circle of radius a under the pressure p from the
-    // axisymmetric model at its defaults, in a cylinder of radius R and height H
-    // with the box's far boundary.
-    double axisymmetric_stress_intensity_factor(const EllipticalModel &settings, const EllipticalGap &gap)
+    // The axisymmetric model of the circle of radius a at its defaults, in a
+    // cylinder of radius R and height H with the box's far boundary.
+    PennyGapModelParameters axisymmetric_circle(const EllipticalModel &settings, const EllipticalGap &gap)
     {
       auto model                   = default_values<PennyGapModelParameters>(penny_gap_model_sections);
       model.material               = settings.model.material;
@@ -42,11 +42,17 @@ namespace penny
       model.geometry.domain_radius = settings.model.mesh.domain_width * gap.semi_axis_a;
       model.geometry.domain_height = settings.model.mesh.domain_height * gap.semi_axis_a;
       model.geometry.far_boundary  = settings.model.far_boundary;
+      return model;
+    }
+
+    // K_I of the circle under the pressure p from that model.
+    double axisymmetric_stress_intensity_factor(const PennyGapModelParameters &model, const double pressure)
+    {
       const auto rings =
           default_values<std::vector<double>>([&](Sections &sections, std::vector<double> &radii) {
             ring_section(sections, radii, model.geometry);
           });
-      const LoadParameters load{LoadParameters::Type::uniform, gap.pressure, 1, "", 1};
+      const LoadParameters load{LoadParameters::Type::uniform, pressure, 1, "", 1};
       TimerOutput          timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
       return solve_penny_gap(model, load, rings, timer).rings.back().signed_stress_intensity_factor;
     }
@@ -218,6 +224,14 @@ namespace penny
     log << "Building the quarter model of the gap b/a = " << gap.aspect_ratio << "...\n" << std::flush;
     const auto parameters = settings.with_semi_axes(gap.semi_axis_a, gap.aspect_ratio * gap.semi_axis_a);
     check_elliptical_model_size(parameters);
+    // The circle under uniform pressure is compared with the axisymmetric model.
+    std::optional<PennyGapModelParameters> circle;
+    if (gap.aspect_ratio == 1 && gap.uniform())
+      {
+        circle = axisymmetric_circle(settings, gap);
+        check_model_size(*circle, model_cells(*circle),
+                         " of the axisymmetric model the circle is compared with");
+      }
     EllipticalGapModel model(parameters, timer);
     const auto        &system = model.get_system();
     log << system.get_triangulation().n_global_active_cells() << " cells, "
@@ -255,12 +269,12 @@ namespace penny
       solved.exact_sifs.push_back(exact.stress_intensity_factor(phi));
     for (const auto &ring : solved.signed_sifs)
       solved.largest_error = std::max(solved.largest_error, largest_relative_error(ring, solved.exact_sifs));
-    if (gap.aspect_ratio == 1 && gap.uniform())
+    if (circle)
       {
         TimerOutput::Scope scope(timer, "axisymmetric model");
         log << "The circle: K_I of the axisymmetric model...\n" << std::flush;
         solved.axisymmetric_sifs.assign(solved.angles.size(),
-                                        axisymmetric_stress_intensity_factor(settings, gap));
+                                        axisymmetric_stress_intensity_factor(*circle, gap.pressure));
       }
     solved.opening_at_centre       = model.opening_at_centre(u);
     solved.exact_opening_at_centre = exact.opening(0, 0);
