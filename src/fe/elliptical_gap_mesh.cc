@@ -439,7 +439,8 @@ namespace penny
   {
     void check_parameters(const EllipticalGapMeshParameters &p)
     {
-      check(p.semi_axis_b > 0 && p.semi_axis_a >= p.semi_axis_b, "the semi-axes must satisfy a >= b > 0");
+      check(p.semi_axis_b >= smallest_aspect_ratio * p.semi_axis_a && p.semi_axis_a >= p.semi_axis_b,
+            "the semi-axes must satisfy a >= b >= smallest_aspect_ratio a");
       check(p.outer_shell_aspect > 0, "outer_shell_aspect must be positive");
       check(p.cells_along_front >= 2 && p.cells_along_front % 2 == 0,
             "cells_along_front must be even and >= 2");
