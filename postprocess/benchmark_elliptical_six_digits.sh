@@ -10,8 +10,8 @@
 # 1e-6 for the circle (its uniform error part keeps the circle above 1e-6 at
 # 1e-5); then the table of the largest K_I error on each ring, w(0), the gap
 # volume, DoFs, CG iterations, wall time and peak memory
-# (postprocess/report_elliptical_convergence.py). About 70 minutes (4279 s in
-# the report of 2026-11-28); run it on an idle machine.
+# (postprocess/report_elliptical_convergence.py). About 50 minutes (2933 s in
+# the report of 2026-11-29); run it on an idle machine.
 # Usage, from anywhere: postprocess/benchmark_elliptical_six_digits.sh [BUILD [OUT]]
 # (defaults: build, output/benchmark-elliptical-six-digits, both from the repository root)
 set -euo pipefail
