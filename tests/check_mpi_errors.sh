@@ -6,7 +6,8 @@
 # is the LD_PRELOAD library of write_failure.cc.
 #   - out/ holds a file penny did not write (refused on rank 0, before any solve);
 #   - the disk fills while rank 0 writes the VTU gathered from both ranks;
-#   - a 3D model too large for the memory, refused on both ranks;
+#   - a 3D model too large for the memory, refused on both ranks, naming the
+#     limit that binds (the memory shared by the ranks, or ulimit -v);
 #   - rank 1 alone fails (its own parameter file, bad) while rank 0 waits
 #     for it in a collective operation.
 set -u
@@ -47,7 +48,11 @@ expect_error "No space left on device" -np 2 -x PENNY_TEST_DISK_BYTES=5000 -x LD
 
 # A 3D model too large for the memory: refused on both ranks before it is refined.
 cp "$(dirname "$scene")/../bad-input/elliptical-too-large.prm" too-large.prm
-expect_error "Global refinements = 3, .* per rank; each rank may use" -np 2 "$penny" too-large.prm
+expect_error "Global refinements = 3, .* per rank; each rank may use .*, shared by 2 ranks, after" \
+  -np 2 "$penny" too-large.prm
+# The same under an address-space limit, which holds for each rank alone: the line names it.
+(ulimit -v 4000000 && expect_error "per rank; each rank may use .* address-space limit (ulimit -v)" \
+  -np 2 "$penny" too-large.prm) || exit 1
 
 # Rank 1 alone fails: its parameter file (mpirun's MPMD form) holds a bad
 # value, while rank 0 goes on and waits for it in a collective operation.
