@@ -157,8 +157,8 @@ namespace penny
       entries.number("Semi-axis a", gap.semi_axis_a, 1, magnitude("m"),
                      "The larger semi-axis of the gap x^2/a^2 + y^2/b^2 < 1 on z = 0, along x. Units: m.");
       entries.number("Aspect ratio b/a", gap.aspect_ratio, 0.5, interval("[]", smallest_aspect_ratio, 1),
-                     "The smaller semi-axis b along y over a, down to 0.02, below which the cells around "
-                     "the tip degenerate; slender gaps need finer meshes than round ones "
+                     "The smaller semi-axis b along y over a; below the allowed range the cells around "
+                     "the tip degenerate, and slender gaps need finer meshes than round ones "
                      "(doc/elliptical.md). Units: none.");
       entries.number(
           "Pressure p", gap.pressure, 1e6, signed_magnitude("Pa"),
