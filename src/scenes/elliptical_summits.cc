@@ -53,6 +53,7 @@ namespace penny
       std::vector<SummitGaps> sampled_exact;         // the closed form, sampled as the FE is
       double                  largest_error;         // of b/a, the area ratio and psi, FE against exact
       double                  interpolation_error;   // the same, sampled closed form against exact
+      double                  estimated_error;       // the same, FE against coarse FE: its estimate
       unsigned int            fe_models;
     };
 
@@ -320,6 +321,7 @@ namespace penny
 
         solved.largest_error       = largest_relative_error(solved.fe, solved.exact);
         solved.interpolation_error = largest_relative_error(solved.sampled_exact, solved.exact);
+        solved.estimated_error     = largest_relative_error(solved.fe, solved.coarse_fe);
         Table summary              = Table::summary();
         summary.add_row({"3D models solved (3 loads each)", solved.fe_models});
         summary.add_row({"shapes sampled per discretisation", shapes_sampled});
@@ -329,6 +331,8 @@ namespace penny
                          Table::Cell(solved.largest_error, Table::error_digits)});
         summary.add_row({"the same, of the closed form sampled as the FE is (the interpolation's share)",
                          Table::Cell(solved.interpolation_error, Table::error_digits)});
+        summary.add_row({"its estimate from the two discretisations, largest |FE - coarse FE|/coarse FE",
+                         Table::Cell(solved.estimated_error, Table::error_digits)});
         add_phase_times(summary, timer);
 
         publish(
