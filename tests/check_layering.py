@@ -27,7 +27,7 @@ allowed = {
     "output": fe_layers,
     "problems": fe_layers + spectral + ["output"],
     "scenes": fe_layers + spectral + ["output", "problems"],
-    "apps": ["input", "scenes"],
+    "apps": ["input", "parallel", "scenes"],
 }
 fe_free = set(below_fe + spectral)  # no deal.II beyond deal.II/base
 reads_entries = {"problems", "scenes", "apps"}

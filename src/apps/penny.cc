@@ -1,5 +1,6 @@
 // penny: runs one scene from a deal.II parameter file.
 #include "input/input_error.h"
+#include "parallel/interruption.h"
 #include "scenes/scene.h"
 
 #include <deal.II/base/mpi.h>
@@ -110,6 +111,7 @@ int main(int argc, char **argv)
   if (!std::getenv("OMPI_COMM_WORLD_SIZE"))
     setenv("OMPI_MCA_ess_singleton_isolated", "1", 0);
 
+  penny::handle_interruptions();
   dealii::Utilities::MPI::MPI_InitFinalize mpi(argc, argv, 1);
   MPI_Comm                                 errors;
   MPI_Comm_dup(MPI_COMM_WORLD, &errors);

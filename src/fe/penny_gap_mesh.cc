@@ -5,6 +5,7 @@
 #include "fe/tip_graded_mesh.h"
 #include "input/input_error.h"
 #include "parallel/collective.h"
+#include "parallel/interruption.h"
 
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/grid/grid_in.h>
@@ -157,6 +158,7 @@ namespace penny
         if (!mkdtemp(folder.data()))
           throw std::runtime_error("mesh: could not create a temporary folder for gmsh: " +
                                    std::string(std::strerror(errno)));
+        remove_on_interruption(folder);
         const std::filesystem::path msh_file = std::filesystem::path(folder) / "mesh.msh";
         const std::filesystem::path log_file = std::filesystem::path(folder) / "gmsh.log";
         // The child's address space: what it inherits, and what the run may use.
@@ -165,10 +167,17 @@ namespace penny
         const pid_t parent = getpid();
         const pid_t child  = fork();
         if (child < 0)
-          throw std::runtime_error("mesh: could not start gmsh: " + std::string(std::strerror(errno)));
+          {
+            const std::string reason = std::strerror(errno);
+            std::error_code   ignored;
+            std::filesystem::remove_all(folder, ignored);
+            forget_on_interruption(folder);
+            throw std::runtime_error("mesh: could not start gmsh: " + reason);
+          }
         if (child == 0)
           {
-            // The child dies with penny.
+            // The child dies with penny, and by Ctrl-C or kill as a program does.
+            restore_interruption_signals();
             prctl(PR_SET_PDEATHSIG, SIGKILL);
             if (getppid() != parent)
               _exit(failed);
@@ -194,6 +203,7 @@ namespace penny
         const std::string error = gmsh_error(log.str());
         std::error_code   ignored;
         std::filesystem::remove_all(folder, ignored);
+        forget_on_interruption(folder);
 
         // An exception escaping gmsh's own threads ends it with SIGABRT.
         if ((WIFEXITED(status) && WEXITSTATUS(status) == out_of_memory) ||

@@ -2,6 +2,7 @@
 
 #include "input/input_error.h"
 #include "parallel/collective.h"
+#include "parallel/interruption.h"
 
 #include <deal.II/base/mpi.h>
 
@@ -194,6 +195,7 @@ namespace penny
     if (!mkdtemp(pattern.data()))
       throw InputError(entry + " cannot be created or is not writable (" + errno_text() + ")");
     staging_directory = pattern;
+    remove_on_interruption(staging_directory);
     write_file(staging_directory / marker,
                "results of penny, replaced whole by the next run into this folder\n",
                (final_directory / marker).string());
@@ -204,6 +206,7 @@ namespace penny
     std::error_code ignored;
     if (!committed && !staging_directory.empty())
       fs::remove_all(staging_directory, ignored);
+    forget_on_interruption(staging_directory);
     staging_directory.clear();
     if (lock >= 0)
       close(lock); // releases the flock
@@ -236,9 +239,13 @@ namespace penny
         throw std::runtime_error("output: could not open " + name + " to its readers: " + errno_text());
       sync_to_disk(staging_directory, name);
       const bool replaces = fs::exists(fs::symlink_status(target));
-      if (renameat2(AT_FDCWD, staging_directory.c_str(), AT_FDCWD, target.c_str(),
-                    replaces ? RENAME_EXCHANGE : RENAME_NOREPLACE) != 0)
-        throw std::runtime_error("output: could not move the results into " + name + ": " + errno_text());
+      {
+        // An interruption removes the staging folder before or after the swap, not during it.
+        const auto held = hold_interruptions();
+        if (renameat2(AT_FDCWD, staging_directory.c_str(), AT_FDCWD, target.c_str(),
+                      replaces ? RENAME_EXCHANGE : RENAME_NOREPLACE) != 0)
+          throw std::runtime_error("output: could not move the results into " + name + ": " + errno_text());
+      }
       committed = true;
       if (replaces) // the staging folder now holds the previous results
         {

@@ -2,7 +2,8 @@
 // staging folder beside the result folder; when the scene has finished, the
 // staging folder takes the place of the result folder in one rename, and the
 // previous results go. A run that fails removes its staging folder and leaves
-// the previous results untouched; one that is killed leaves at most a stale
+// the previous results untouched, and so does one that is interrupted
+// (parallel/interruption.h); one killed by SIGKILL leaves at most a stale
 // staging folder, which the next run into the same folder removes.
 //
 // The result folder belongs to penny: it is replaced whole, so it must be new,

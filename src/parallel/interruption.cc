@@ -1,0 +1,77 @@
+#include "parallel/interruption.h"
+
+#include <algorithm>
+#include <csignal>
+#include <pthread.h>
+#include <thread>
+#include <vector>
+
+namespace penny
+{
+  namespace
+  {
+    std::mutex                         registry_mutex;
+    std::vector<std::filesystem::path> registry; // under registry_mutex
+
+    sigset_t interruption_signals()
+    {
+      sigset_t signals;
+      sigemptyset(&signals);
+      for (const int signal : {SIGINT, SIGTERM, SIGHUP})
+        sigaddset(&signals, signal);
+      return signals;
+    }
+
+    // Waits for an interruption, removes the registered folders (holding the
+    // registry, so that nothing is moved or registered meanwhile) and lets the
+    // signal's default action end the process.
+    void await_interruption(const sigset_t signals)
+    {
+      int signal = 0;
+      while (sigwait(&signals, &signal) != 0)
+        ;
+      const std::lock_guard<std::mutex> lock(registry_mutex);
+      std::error_code                   ignored;
+      for (const auto &folder : registry)
+        std::filesystem::remove_all(folder, ignored);
+      std::signal(signal, SIG_DFL);
+      sigset_t own;
+      sigemptyset(&own);
+      sigaddset(&own, signal);
+      pthread_sigmask(SIG_UNBLOCK, &own, nullptr);
+      raise(signal);
+    }
+  } // namespace
+
+  void handle_interruptions()
+  {
+    const sigset_t signals = interruption_signals();
+    pthread_sigmask(SIG_BLOCK, &signals, nullptr);
+    std::thread(await_interruption, signals).detach();
+  }
+
+  void remove_on_interruption(const std::filesystem::path &folder)
+  {
+    const std::lock_guard<std::mutex> lock(registry_mutex);
+    registry.push_back(folder);
+  }
+
+  void forget_on_interruption(const std::filesystem::path &folder)
+  {
+    const std::lock_guard<std::mutex> lock(registry_mutex);
+    registry.erase(std::remove(registry.begin(), registry.end(), folder), registry.end());
+  }
+
+  std::unique_lock<std::mutex> hold_interruptions()
+  {
+    return std::unique_lock<std::mutex>(registry_mutex);
+  }
+
+  void restore_interruption_signals()
+  {
+    const sigset_t signals = interruption_signals();
+    for (const int signal : {SIGINT, SIGTERM, SIGHUP})
+      std::signal(signal, SIG_DFL);
+    pthread_sigmask(SIG_UNBLOCK, &signals, nullptr);
+  }
+} // namespace penny

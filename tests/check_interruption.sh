@@ -1,0 +1,58 @@
+#!/usr/bin/env bash
+# Usage: check_interruption.sh PENNY SCENE.prm
+# A run stopped by SIGTERM (kill; mpirun passes it on to its ranks) or SIGINT
+# (Ctrl-C) while it computes ends by that signal, leaves no staging folder
+# beside its output folder, and the previous results in out/ intact: serial,
+# and on 2 ranks under mpirun. SCENE.prm is a small penny-gap scene writing
+# to out/; the interrupted runs solve a finer copy of it, which takes seconds.
+set -u
+penny=$1 scene=$2
+export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_base_oversubscribe=1
+work=$(mktemp -d)
+trap 'kill -KILL $(jobs -p) 2> /dev/null; rm -rf "$work"' EXIT
+cd "$work" || exit 1
+cp "$scene" scene.prm
+sed 's/^\( *set Polynomial degree *=\).*/\1 4/; s/^\( *set Tip refinement levels *=.*\)/\1\n  set Global refinements = 2/' \
+  scene.prm > slow.prm
+grep -q "Global refinements = 2" slow.prm || { echo "FAIL: could not make the slow copy"; exit 1; }
+
+fail() { echo "FAIL: $*"; echo "--- output:"; cat output; exit 1; }
+fingerprint() { (cd out && find . -type f | sort | xargs -r sha256sum); }
+
+"$penny" scene.prm > output 2>&1 || fail "the first run failed"
+before=$(fingerprint)
+
+# Starts the slow run (the command given), waits for its staging folder,
+# lets it compute a second, sends the signal and checks the exit status
+# (a pattern) and what is left.
+interrupt() {
+  local signal=$1 expected_status=$2
+  shift 2
+  "$@" > output 2>&1 &
+  local pid=$!
+  for _ in $(seq 300); do
+    compgen -G ".out.staging-*" > /dev/null && break
+    sleep 0.1
+  done
+  compgen -G ".out.staging-*" > /dev/null || fail "no staging folder within 30 s ($*)"
+  sleep 1
+  kill -"$signal" $pid
+  local status=0
+  timeout 60 tail --pid=$pid -f /dev/null || fail "still running 60 s after SIG$signal ($*)"
+  wait $pid || status=$?
+  # shellcheck disable=SC2254 # the expected status is a pattern
+  case $status in
+    $expected_status) ;;
+    *) fail "exit status $status after SIG$signal, expected $expected_status ($*)" ;;
+  esac
+  ! compgen -G ".out.staging-*" > /dev/null || fail "a staging folder is left after SIG$signal ($*): $(ls -a)"
+  [ "$(fingerprint)" = "$before" ] || fail "the previous results changed after SIG$signal ($*)"
+  echo "ok: SIG$signal, exit status $status, no staging folder, previous results intact ($*)"
+}
+
+# A background job of a script ignores SIGINT unless told otherwise: trap
+# restores the default in the child.
+interrupt TERM 143 "$penny" slow.prm
+interrupt INT 130 bash -c "trap - INT; exec \"$penny\" slow.prm"
+# mpirun passes SIGTERM on to the ranks and ends with a failure status of its own.
+interrupt TERM "[1-9]*" mpirun -np 2 "$penny" slow.prm
