@@ -12,13 +12,14 @@ namespace penny
   {
     std::mutex                         registry_mutex;
     std::vector<std::filesystem::path> registry; // under registry_mutex
+    constexpr int                      interruptions[] = {SIGINT, SIGTERM, SIGHUP};
 
     sigset_t interruption_signals()
     {
       sigset_t signals;
       sigemptyset(&signals);
-      for (const int signal : {SIGINT, SIGTERM, SIGHUP})
-        sigaddset(&signals, signal);
+      for (const int each : interruptions)
+        sigaddset(&signals, each);
       return signals;
     }
 
@@ -27,19 +28,19 @@ namespace penny
     // signal's default action end the process.
     void await_interruption(const sigset_t signals)
     {
-      int signal = 0;
-      while (sigwait(&signals, &signal) != 0)
+      int received = 0;
+      while (sigwait(&signals, &received) != 0)
         ;
       const std::lock_guard<std::mutex> lock(registry_mutex);
       std::error_code                   ignored;
       for (const auto &folder : registry)
         std::filesystem::remove_all(folder, ignored);
-      std::signal(signal, SIG_DFL);
+      std::signal(received, SIG_DFL);
       sigset_t own;
       sigemptyset(&own);
-      sigaddset(&own, signal);
+      sigaddset(&own, received);
       pthread_sigmask(SIG_UNBLOCK, &own, nullptr);
-      raise(signal);
+      raise(received);
     }
   } // namespace
 
@@ -70,8 +71,8 @@ namespace penny
   void restore_interruption_signals()
   {
     const sigset_t signals = interruption_signals();
-    for (const int signal : {SIGINT, SIGTERM, SIGHUP})
-      std::signal(signal, SIG_DFL);
+    for (const int each : interruptions)
+      std::signal(each, SIG_DFL);
     pthread_sigmask(SIG_UNBLOCK, &signals, nullptr);
   }
 } // namespace penny
