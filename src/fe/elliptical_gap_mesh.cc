@@ -442,6 +442,8 @@ namespace penny
       check(p.semi_axis_b >= smallest_aspect_ratio * p.semi_axis_a && p.semi_axis_a >= p.semi_axis_b,
             "the semi-axes must satisfy a >= b >= smallest_aspect_ratio a");
       check(p.outer_shell_aspect > 0, "outer_shell_aspect must be positive");
+      check(p.domain_width <= largest_box && p.domain_height <= largest_box,
+            "the box must reach at most largest_box a along x, y and z");
       check(p.cells_along_front >= 2 && p.cells_along_front % 2 == 0,
             "cells_along_front must be even and >= 2");
       check(p.cells_around_front >= 4 && p.cells_around_front % 4 == 0,

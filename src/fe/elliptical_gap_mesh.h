@@ -86,6 +86,11 @@ namespace penny
   // J-integral finds K_I = 0, at 0.005 cells turn inside out).
   constexpr double smallest_aspect_ratio = 0.02;
 
+  // The largest box R/a and H/a the mesh is built for (measured on the test
+  // mesh, b/a = 0.5, 2 ranks: K_I within 7.2e-2 at 40 a and at 1e5 a, 1.2e-1
+  // at 1e6 a; from 1e12 a CG with AMG does not converge).
+  constexpr double largest_box = 1e5;
+
   // Manifold id of the cells swept along the front (the chart above).
   constexpr dealii::types::manifold_id elliptical_front_manifold_id = 1;
 

@@ -81,6 +81,10 @@ namespace penny
             triangulation);
     }
 
+    // The longest gmsh may mesh a .geo (a 2D mesh takes seconds; a .geo that
+    // loops would otherwise hold the run forever).
+    constexpr unsigned int gmsh_time_limit = 600; // s
+
     // What a child process running gmsh reports by its exit status.
     enum GmshStatus
     {
@@ -179,6 +183,7 @@ namespace penny
             // The child dies with penny, and by Ctrl-C or kill as a program does.
             restore_interruption_signals();
             prctl(PR_SET_PDEATHSIG, SIGKILL);
+            alarm(gmsh_time_limit);
             if (getppid() != parent)
               _exit(failed);
             const int log = open(log_file.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0600);
@@ -211,6 +216,9 @@ namespace penny
           throw InputError(entry + ": gmsh ran out of memory (its limit: " +
                            std::to_string(static_cast<long long>(limit / (1 << 20))) +
                            " MiB of address space); a coarser mesh needs less");
+        if (WIFSIGNALED(status) && WTERMSIG(status) == SIGALRM)
+          throw InputError(entry + ": gmsh did not finish within " + std::to_string(gmsh_time_limit) +
+                           " s (does the .geo loop, or ask for a far finer mesh?)");
         if (WIFSIGNALED(status))
           throw InputError(entry + ": gmsh was killed by signal " + std::to_string(WTERMSIG(status)) + " (" +
                            strsignal(WTERMSIG(status)) + ")" +

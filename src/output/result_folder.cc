@@ -136,7 +136,24 @@ namespace penny
           break;
       }
 
-    // The lock first: everything below looks at a folder no other run touches.
+    // A folder holding the working folder or an input file is refused before
+    // the lock, whose file would otherwise appear beside it (for '.', in the
+    // working folder's parent).
+    if (fs::is_directory(fs::symlink_status(target, error)))
+      {
+        const auto inside = [&](const fs::path &path) {
+          const fs::path relative = fs::weakly_canonical(path).lexically_relative(fs::canonical(target));
+          return !relative.empty() && *relative.begin() != "..";
+        };
+        if (inside(fs::current_path()))
+          throw InputError(entry + " holds the working folder; a run replaces its output folder whole");
+        for (const fs::path &input : input_files)
+          if (!input.empty() && inside(input))
+            throw InputError(entry + " holds the input file " + in_quotes(input.string()) +
+                             "; a run replaces its output folder whole");
+      }
+
+    // The lock next: everything below looks at a folder no other run touches.
     const fs::path lock_file = parent / ("." + target.filename().string() + ".lock");
     lock                     = open(lock_file.c_str(), O_RDWR | O_CREAT | O_NOFOLLOW | O_CLOEXEC, 0644);
     if (lock < 0 && errno == ELOOP)
@@ -161,16 +178,6 @@ namespace penny
                                    "folder whole)");
         if (!fs::is_directory(target_status))
           throw InputError(entry + " is not a folder");
-        const auto inside = [&](const fs::path &path) {
-          const fs::path relative = fs::weakly_canonical(path).lexically_relative(fs::canonical(target));
-          return !relative.empty() && *relative.begin() != "..";
-        };
-        if (inside(fs::current_path()))
-          throw InputError(entry + " holds the working folder; a run replaces its output folder whole");
-        for (const fs::path &input : input_files)
-          if (!input.empty() && inside(input))
-            throw InputError(entry + " holds the input file " + in_quotes(input.string()) +
-                             "; a run replaces its output folder whole");
         if (!fs::is_empty(target) && !fs::exists(target / marker))
           throw InputError(entry + " holds files penny did not write; name a new or empty folder (a run "
                                    "replaces its output folder whole)");

@@ -71,9 +71,9 @@ namespace penny
     auto &mesh = model.model.mesh;
     elastic_model_sections(sections, model.model, ModelDimension::three);
     sections.subsection("Elliptical model", [&](Entries &entries) {
-      entries.number("Box width R/a", mesh.domain_width, 40, at_least(2.8),
+      entries.number("Box width R/a", mesh.domain_width, 40, interval("[]", 2.8, largest_box),
                      "The quarter model reaches x = R and y = R. Units: a.");
-      entries.number("Box height H/a", mesh.domain_height, 40, at_least(2.8),
+      entries.number("Box height H/a", mesh.domain_height, 40, interval("[]", 2.8, largest_box),
                      "The model reaches z = H (with free far faces K_I of the circle moves by 1e-4 between "
                      "20 and 40). Units: a.");
       entries.choice("Far boundary", model.model.far_boundary, FarBoundary::free,

@@ -36,7 +36,8 @@ namespace penny
   void SampledPowerLaws::entries(Entries &entries, const std::vector<double> &default_magnifications,
                                  const Range &magnification_range)
   {
-    entries.numbers("Hurst exponents", hurst_exponents, {0.25, 0.5, 0.75}, interval("()", 0, 1),
+    entries.numbers("Hurst exponents", hurst_exponents, {0.25, 0.5, 0.75},
+                    interval("[)", smallest_hurst_exponent, 1),
                     "One power law per H and zeta (replacing Roughness/Hurst exponent H). Units: none.");
     entries.numbers(
         "Magnifications", magnifications, default_magnifications, magnification_range,

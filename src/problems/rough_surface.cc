@@ -28,7 +28,8 @@ namespace penny
           EnumNames<Spectrum>{{"power-law", Spectrum::power_law}, {"file", Spectrum::file}},
           "Isotropic height PSD C(q): the paper's power law (H/2pi) (h0/q0)^2 (q/q0)^(-2(H+1)) on q0 <= q "
           "<= zeta q0, or the table in 'Spectrum file'.");
-      entries.number("Hurst exponent H", roughness.hurst, 0.75, interval("()", 0, 1), "Units: none.");
+      entries.number("Hurst exponent H", roughness.hurst, 0.75, interval("[)", smallest_hurst_exponent, 1),
+                     "Units: none.");
       entries.number("Long-wavelength cut-off q0", roughness.q0, 6283.185307179586, above(0),
                      "Smallest wavenumber of the power law, q0 = 2 pi/lambda0. Units: 1/m.");
       entries.number("Magnification zeta", roughness.zeta, 1000, above(1),
@@ -90,7 +91,8 @@ namespace penny
                     interval("[]", -100, 100, "sqrt(V)"),
                     "The range of p_bar/sqrt(V) of the curves (compression positive); zero-load-gap-area "
                     "takes its number of points. Units: sqrt(V).");
-      entries.numbers("Hurst exponents", area_load.hurst_exponents, {0.75, 0.5, 0.25}, interval("()", 0, 1),
+      entries.numbers("Hurst exponents", area_load.hurst_exponents, {0.75, 0.5, 0.25},
+                      interval("[)", smallest_hurst_exponent, 1),
                       "area-load: one panel per H; magnification-scaling: one fit per H. Units: none.");
       // Beyond 1e30 the spectral moments leave the range of a double.
       entries.numbers("Magnifications", area_load.magnifications, {1, 10, 100, 1000, 10000},

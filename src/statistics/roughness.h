@@ -22,6 +22,12 @@ namespace penny
   // h0 = (h0/lambda0) lambda0 with lambda0 = 2 pi/q0.
   PowerSpectrum power_law_spectrum(double hurst, double q0, double zeta, double h0);
 
+  // The smallest Hurst exponent the scenes take: the power law's heights
+  // vanish with H (m0 ~ h0^2 H ln zeta), and far below this bound the
+  // contact solver works near the end of a double's range (H = 1e-200 gave
+  // NaN, 1e-160 did not finish); the paper's H lie between 0.25 and 0.75.
+  constexpr double smallest_hurst_exponent = 0.01;
+
   // The height PSD of a rough surface: the paper's power law (its H, q0,
   // zeta and amplitude h0) or the table of a file.
   struct RoughnessParameters
