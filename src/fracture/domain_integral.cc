@@ -46,7 +46,9 @@ namespace penny
       {
         result.reference.push_back(stress_intensity_factor(b));
         if (!(result.reference.back() > 0))
-          throw std::runtime_error("J-integral: the reference load gives K_I = 0; it cannot sign K_I");
+          throw std::runtime_error(
+              "J-integral: the reference load gives K_I = 0 on a ring, so it cannot sign "
+              "K_I (is the ring far smaller than the cells at the tip?)");
       }
     for (unsigned int l = 0; l < r; ++l)
       {

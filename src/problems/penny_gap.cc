@@ -133,6 +133,9 @@ namespace penny
                              "; the load must be finite on 0 < r < c");
           largest = std::max(largest, std::abs(p));
         }
+      // The axis too, where a parabola peaks (a load singular there is left to the points above).
+      if (std::isfinite((*face)(0)))
+        largest = std::max(largest, std::abs((*face)(0)));
       if (!std::isfinite((*face)(c)))
         throw InputError(load_entries(load) + " gives p(c) = " + shortest((*face)(c)) +
                          " at the tip r = c = " + shortest(c) + " m; the load must be finite up to the tip");
