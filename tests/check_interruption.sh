@@ -3,7 +3,8 @@
 # A run stopped by SIGTERM (kill; mpirun passes it on to its ranks) or SIGINT
 # (Ctrl-C) while it computes ends by that signal, leaves no staging folder
 # beside its output folder, and the previous results in out/ intact: serial,
-# and on 2 ranks under mpirun. SCENE.prm is a small penny-gap scene writing
+# and on 2 ranks under mpirun. One that ignores SIGHUP (nohup) runs on
+# through it to its results. SCENE.prm is a small penny-gap scene writing
 # to out/; the interrupted runs solve a finer copy of it, which takes seconds.
 set -u
 penny=$1 scene=$2
@@ -50,9 +51,24 @@ interrupt() {
   echo "ok: SIG$signal, exit status $status, no staging folder, previous results intact ($*)"
 }
 
-# A background job of a script ignores SIGINT unless told otherwise: trap
-# restores the default in the child.
+# A script's background job ignores SIGINT, and so does penny then (as it
+# keeps ignoring SIGHUP under nohup): env gives it the default back.
 interrupt TERM 143 "$penny" slow.prm
-interrupt INT 130 bash -c "trap - INT; exec \"$penny\" slow.prm"
+interrupt INT 130 env --default-signal=INT "$penny" slow.prm
+# nohup: SIGHUP changes nothing, the run ends with its results.
+nohup "$penny" slow.prm > output 2>&1 &
+pid=$!
+for _ in $(seq 300); do
+  compgen -G ".out.staging-*" > /dev/null && break
+  sleep 0.1
+done
+sleep 1
+kill -HUP $pid
+wait $pid || fail "the run under nohup failed after SIGHUP (status $?)"
+grep -q "^PASS" output || fail "the run under nohup did not pass after SIGHUP"
+[ "$(fingerprint)" != "$before" ] || fail "the run under nohup left the previous results in place"
+echo "ok: SIGHUP under nohup, the run went on to its results"
+before=$(fingerprint)
+
 # mpirun passes SIGTERM on to the ranks and ends with a failure status of its own.
 interrupt TERM "[1-9]*" mpirun -np 2 "$penny" slow.prm

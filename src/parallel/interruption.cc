@@ -23,13 +23,18 @@ namespace penny
       return signals;
     }
 
-    // Waits for an interruption, removes the registered folders (holding the
-    // registry, so that nothing is moved or registered meanwhile) and lets the
-    // signal's default action end the process.
+    // The interruptions the caller told the run to ignore (nohup ignores
+    // SIGHUP, a script's background job SIGINT), as they were at the start:
+    // Open MPI's start sets SIGHUP back to its default.
+    sigset_t ignored_at_start;
+
+    // Waits for an interruption that is not ignored, removes the registered
+    // folders (holding the registry, so that nothing is moved or registered
+    // meanwhile) and lets the signal's default action end the process.
     void await_interruption(const sigset_t signals)
     {
       int received = 0;
-      while (sigwait(&signals, &received) != 0)
+      while (sigwait(&signals, &received) != 0 || sigismember(&ignored_at_start, received))
         ;
       const std::lock_guard<std::mutex> lock(registry_mutex);
       std::error_code                   ignored;
@@ -46,6 +51,13 @@ namespace penny
 
   void handle_interruptions()
   {
+    sigemptyset(&ignored_at_start);
+    for (const int each : interruptions)
+      {
+        struct sigaction action;
+        if (sigaction(each, nullptr, &action) == 0 && action.sa_handler == SIG_IGN)
+          sigaddset(&ignored_at_start, each);
+      }
     const sigset_t signals = interruption_signals();
     pthread_sigmask(SIG_BLOCK, &signals, nullptr);
     std::thread(await_interruption, signals).detach();
@@ -70,9 +82,9 @@ namespace penny
 
   void restore_interruption_signals()
   {
-    const sigset_t signals = interruption_signals();
     for (const int each : interruptions)
-      std::signal(each, SIG_DFL);
+      std::signal(each, sigismember(&ignored_at_start, each) ? SIG_IGN : SIG_DFL);
+    const sigset_t signals = interruption_signals();
     pthread_sigmask(SIG_UNBLOCK, &signals, nullptr);
   }
 } // namespace penny

@@ -4,8 +4,8 @@
 // or any other thread starts, blocks these signals in every thread and starts
 // one that waits for them; on one, it removes the folders registered below
 // and ends the process by the same signal, as its default action would.
-// SIGKILL cannot be caught: a run killed by it leaves its staging folder for
-// the next run into the same folder to remove.
+// Signals the caller ignores stay ignored. SIGKILL cannot be caught: a run killed by it leaves its staging
+// folder for the next run into the same folder to remove.
 #pragma once
 
 #include <filesystem>
@@ -23,6 +23,6 @@ namespace penny
   // the removal half-way (moving a folder into place).
   std::unique_lock<std::mutex> hold_interruptions();
 
-  // In a forked child: the signals back to their default, unblocked.
+  // In a forked child: the signals unblocked, ignored or default as at the start.
   void restore_interruption_signals();
 } // namespace penny
