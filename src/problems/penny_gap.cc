@@ -219,7 +219,7 @@ namespace penny
     if (mesh.generator == MeshParameters::Generator::gmsh &&
         !std::filesystem::is_regular_file(mesh.mesh_file))
       throw InputError("Mesh/Mesh file = " + in_quotes(mesh.mesh_file) +
-                       " does not exist (expected a gmsh .geo or .msh file)");
+                       " does not exist or is not a file (expected a gmsh .geo or .msh file)");
     try
       {
         return penny_gap_mesh_cells(model.geometry, mesh, model.communicator);

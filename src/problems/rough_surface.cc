@@ -56,7 +56,7 @@ namespace penny
         return;
       if (!std::filesystem::is_regular_file(roughness.spectrum_file))
         throw InputError("Roughness/Spectrum file = " + in_quotes(roughness.spectrum_file) +
-                         " does not exist (expected two columns q (1/m), C(q) (m^4))");
+                         " does not exist or is not a file (expected two columns q (1/m), C(q) (m^4))");
       sections.input_file(roughness.spectrum_file);
     });
   }
