@@ -23,20 +23,24 @@ fingerprint() { (cd out && find . -type f | sort | xargs -r sha256sum); }
 "$penny" scene.prm > output 2>&1 || fail "the first run failed"
 before=$(fingerprint)
 
-# Starts the slow run (the command given), waits for its staging folder,
-# lets it compute a second, sends the signal and checks the exit status
-# (a pattern) and what is left.
-interrupt() {
-  local signal=$1 expected_status=$2
-  shift 2
-  "$@" > output 2>&1 &
-  local pid=$!
+# Waits for the slow run's staging folder, then lets it compute a second.
+await_staging() {
   for _ in $(seq 300); do
     compgen -G ".out.staging-*" > /dev/null && break
     sleep 0.1
   done
   compgen -G ".out.staging-*" > /dev/null || fail "no staging folder within 30 s ($*)"
   sleep 1
+}
+
+# Starts the slow run (the command given), sends the signal once it computes
+# and checks the exit status (a pattern) and what is left.
+interrupt() {
+  local signal=$1 expected_status=$2
+  shift 2
+  "$@" > output 2>&1 &
+  local pid=$!
+  await_staging "$@"
   kill -"$signal" $pid
   local status=0
   timeout 60 tail --pid=$pid -f /dev/null || fail "still running 60 s after SIG$signal ($*)"
@@ -58,11 +62,7 @@ interrupt INT 130 env --default-signal=INT "$penny" slow.prm
 # nohup: SIGHUP changes nothing, the run ends with its results.
 nohup "$penny" slow.prm > output 2>&1 &
 pid=$!
-for _ in $(seq 300); do
-  compgen -G ".out.staging-*" > /dev/null && break
-  sleep 0.1
-done
-sleep 1
+await_staging nohup "$penny" slow.prm
 kill -HUP $pid
 wait $pid || fail "the run under nohup failed after SIGHUP (status $?)"
 grep -q "^PASS" output || fail "the run under nohup did not pass after SIGHUP"

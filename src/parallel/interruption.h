@@ -4,8 +4,9 @@
 // or any other thread starts, blocks these signals in every thread and starts
 // one that waits for them; on one, it removes the folders registered below
 // and ends the process by the same signal, as its default action would.
-// Signals the caller ignores stay ignored. SIGKILL cannot be caught: a run killed by it leaves its staging
-// folder for the next run into the same folder to remove.
+// Signals the caller ignores stay ignored. SIGKILL cannot be caught: a run
+// killed by it leaves its staging folder for the next run into the same
+// folder to remove.
 #pragma once
 
 #include <filesystem>
