@@ -6,6 +6,9 @@
 #                 would replace
 #   self-include  a parameter file that includes itself (by its absolute path)
 #   huge-value    a 100 MB value, which the message must not echo whole
+#   include-beside  an include of a file beside the parameter file, read from
+#                 the working folder (deal.II's rule), where it is not
+#   byte-order-mark  a UTF-8 byte-order mark before the first statement
 set -eu
 penny=$1 case=$2 expected=$3
 here=$(cd "$(dirname "$0")" && pwd)
@@ -22,6 +25,13 @@ case $case in
     ;;
   self-include)
     echo "include $prm" >> "$prm"
+    ;;
+  include-beside)
+    printf 'subsection Material\n  set Poisson'"'"'s ratio nu = 0.3\nend\n' > "$folder/beside.prm"
+    echo "include beside.prm" >> "$prm"
+    ;;
+  byte-order-mark)
+    printf '\357\273\277set Scene = penny-gap\n' | cat - "$prm" > "$prm.new" && mv "$prm.new" "$prm"
     ;;
   huge-value)
     /usr/bin/python3 -c "

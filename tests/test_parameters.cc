@@ -210,7 +210,7 @@ BOOST_AUTO_TEST_CASE(sinusoid_scenes)
       error_of("set Scene = johnson-curves\nsubsection Gap and load\n set Peak tension p* = 1\nend\n"),
       "line 2: subsection 'Gap and load' is not read by Scene = johnson-curves"));
   BOOST_TEST(mentions(
-      error_of("set Scene = periodic-gap-depth\nsubsection Depth study\n set Depths = 1, 0.125\nend\n"),
+      error_of("set Scene = periodic-gap-depth\nsubsection Depth study\n set Depths = 0.125, 1\nend\n"),
       "Depth study/Depths = 0.125 is outside the allowed range (largest ring radius/4 = 0.1875, 100] "
       "lambda"));
   BOOST_TEST(

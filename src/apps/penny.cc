@@ -51,8 +51,8 @@ namespace
       }
     catch (const std::bad_alloc &)
       {
-        return "out of memory: the run needs more memory than it can get (fewer Mesh/Tip refinement "
-               "levels, Global refinements or a lower Finite element/Polynomial degree need less)";
+        return "out of memory: the run needs more memory than it can get (a smaller model needs less: "
+               "fewer refinements, a lower degree, fewer grid points)";
       }
     catch (const std::exception &exception)
       {
@@ -136,7 +136,10 @@ int main(int argc, char **argv)
       else if (argc != 2 || argument.empty() || argument[0] == '-')
         {
           if (speaks)
-            std::cerr << "penny: error: expected one parameter file (try 'penny --help')" << std::endl;
+            std::cerr << "penny: error: "
+                      << (argc == 2 && argument.empty() ? "the parameter file's name is empty"
+                                                        : "expected one parameter file")
+                      << " (try 'penny --help')" << std::endl;
           return 2;
         }
       else

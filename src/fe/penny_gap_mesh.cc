@@ -1,11 +1,11 @@
 #include "fe/penny_gap_mesh.h"
 
 #include "fe/boundary_ids.h"
-#include "fe/problem_size.h"
 #include "fe/tip_graded_mesh.h"
 #include "input/input_error.h"
 #include "parallel/collective.h"
 #include "parallel/interruption.h"
+#include "parallel/memory_budget.h"
 
 #include <deal.II/distributed/shared_tria.h>
 #include <deal.II/grid/grid_in.h>

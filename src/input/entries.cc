@@ -227,17 +227,35 @@ namespace penny
                                    const std::vector<double> &defaults, const std::size_t min_count,
                                    const Range &range, const std::string &documentation)
   {
-    const std::string allowed =
-        "at least " + std::to_string(min_count) + " numbers in " + range.text + ", each below the one before";
+    ordered_numbers(entry, values, defaults, min_count, range, false, documentation);
+  }
+
+  void Entries::increasing_numbers(const std::string &entry, std::vector<double> &values,
+                                   const std::vector<double> &defaults, const std::size_t min_count,
+                                   const Range &range, const std::string &documentation)
+  {
+    ordered_numbers(entry, values, defaults, min_count, range, true, documentation);
+  }
+
+  void Entries::ordered_numbers(const std::string &entry, std::vector<double> &values,
+                                const std::vector<double> &defaults, const std::size_t min_count,
+                                const Range &range, const bool increasing, const std::string &documentation)
+  {
+    const std::string order   = increasing ? "increasing" : "decreasing";
+    const std::string allowed = (min_count > 1 ? "at least " + std::to_string(min_count) + " " : "") +
+                                "numbers in " + range.text + ", each " + (increasing ? "above" : "below") +
+                                " the one before";
     numbers(entry, values, defaults, range,
-            documentation + " At least " + std::to_string(min_count) + ", decreasing.");
+            documentation + (min_count > 1 ? " At least " + std::to_string(min_count) + ", " + order + "."
+                             : increasing  ? " Increasing."
+                                           : " Decreasing."));
     if (!reading_)
       return;
     if (values.size() < min_count)
       throw InputError(name(entry) + " = " + in_quotes(prm.get(entry)) + " is outside the allowed range " +
                        allowed);
     for (std::size_t k = 1; k < values.size(); ++k)
-      require(values[k] < values[k - 1], entry, values[k], allowed);
+      require(increasing ? values[k] > values[k - 1] : values[k] < values[k - 1], entry, values[k], allowed);
   }
 
   void Entries::flag(const std::string &entry, bool &value, const bool default_value,

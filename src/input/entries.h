@@ -92,6 +92,11 @@ namespace penny
                             const std::vector<double> &defaults, std::size_t min_count, const Range &range,
                             const std::string &documentation);
 
+    // The same, each above the one before: a list of cases, none twice.
+    void increasing_numbers(const std::string &entry, std::vector<double> &values,
+                            const std::vector<double> &defaults, std::size_t min_count, const Range &range,
+                            const std::string &documentation);
+
     void flag(const std::string &entry, bool &value, bool default_value, const std::string &documentation);
 
     // One of the names in `names`.
@@ -139,6 +144,9 @@ namespace penny
     bool reading() const { return reading_; }
 
   private:
+    void ordered_numbers(const std::string &entry, std::vector<double> &values,
+                         const std::vector<double> &defaults, std::size_t min_count, const Range &range,
+                         bool increasing, const std::string &documentation);
     void integer_entry(const std::string &entry, long long &value, long long default_value, long long lo,
                        long long hi, const std::string &documentation);
     // An entry read as text that matches `pattern`.

@@ -116,12 +116,12 @@ namespace penny
     return tree;
   }
 
-  std::string scene_of(const boost::property_tree::ptree &tree)
+  std::optional<std::string> scene_of(const boost::property_tree::ptree &tree)
   {
     for (const auto &[key, child] : tree)
       if (demangled(key) == "Scene")
         return value_of(child);
-    return "";
+    return std::nullopt;
   }
 
   void set_json_xml_entries(ParameterHandler &prm, const boost::property_tree::ptree &tree,

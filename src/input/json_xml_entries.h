@@ -8,6 +8,7 @@
 
 #include <boost/property_tree/ptree.hpp>
 
+#include <optional>
 #include <string>
 
 namespace penny
@@ -16,8 +17,8 @@ namespace penny
   // it is not valid JSON or XML.
   boost::property_tree::ptree read_json_xml_tree(const std::string &filename);
 
-  // The top-level 'Scene' entry of the tree; empty if it is not set.
-  std::string scene_of(const boost::property_tree::ptree &tree);
+  // The top-level 'Scene' entry of the tree, if it is set.
+  std::optional<std::string> scene_of(const boost::property_tree::ptree &tree);
 
   // Sets every entry of the tree in `prm` (whose entries are declared), so
   // that a key set twice, an undeclared subsection or entry, or a value that

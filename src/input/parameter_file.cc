@@ -56,7 +56,7 @@ namespace penny
         std::string message = one_line(exception);
         // The scene as the messages below name it.
         const std::string which =
-            "Scene = " + scene + (file.scene.empty() ? ", the default, as the file sets no Scene" : "");
+            "Scene = " + scene + (file.scene ? "" : ", the default, as the file sets no Scene");
         // With only the scene's subsections declared, any other subsection
         // is one the scene does not read.
         std::smatch match;

@@ -9,6 +9,7 @@
 
 #include <boost/property_tree/ptree.hpp>
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -17,7 +18,7 @@ namespace penny
   struct ParameterFile
   {
     std::string                 filename;
-    std::string                 scene;      // the 'Scene' entry; empty if the file does not set it
+    std::optional<std::string>  scene;      // the 'Scene' entry, if the file sets it
     std::vector<std::string>    files;      // the file and every file it includes
     boost::property_tree::ptree tree;       // a JSON or XML file's entries
     PrmStatements               statements; // a .prm file's set statements

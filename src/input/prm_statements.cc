@@ -51,23 +51,33 @@ namespace penny
         while (std::getline(in, line))
           {
             const unsigned int first = ++number;
+            // deal.II's reader takes the mark for text before the statement.
+            if (first == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0)
+              throw InputError("parameter file " + in_quotes(filename) +
+                               " starts with a UTF-8 byte-order mark; save it without one (plain UTF-8 or "
+                               "ASCII)");
             // A backslash at the end continues the line.
             for (std::string next; !line.empty() && line.back() == '\\' && std::getline(in, next); ++number)
               line = line.substr(0, line.size() - 1) + next;
+            // Lines of an included file name the file.
+            const std::string where =
+                (open_files.size() > 1 ? in_quotes(filename) + ", " : "") + "line " + std::to_string(first);
             const std::size_t comment = line.find('#');
+            // deal.II's reader has no escape: the value would end in the backslash.
+            if (comment != std::string::npos && comment > 0 && line[comment - 1] == '\\')
+              throw InputError(where +
+                               ": '\\#' does not escape '#' in a .prm file, where '#' always starts a "
+                               "comment (a .json or .xml parameter file takes any character)");
             if (comment != std::string::npos)
               line.erase(comment);
             const auto [keyword, rest] = statement(line);
             result.sets_any            = result.sets_any || !keyword.empty();
-            // Lines of an included file name the file.
-            const std::string where =
-                (open_files.size() > 1 ? in_quotes(filename) + ", " : "") + "line " + std::to_string(first);
             if (keyword == "subsection")
               path.push_back(rest);
             else if (keyword == "end" && !path.empty())
               path.pop_back();
             else if (keyword == "include")
-              scan(rest);
+              include(rest, filename, where);
             else if (keyword == "set" && rest.find('=') != std::string::npos)
               {
                 std::string entry;
@@ -90,6 +100,21 @@ namespace penny
       PrmStatements result;
 
     private:
+      // deal.II's reader opens an included file from the working folder, not
+      // from the including file's: a name that exists only beside the
+      // including file gets a hint.
+      void include(const std::string &included, const std::string &including, const std::string &where)
+      {
+        namespace fs          = std::filesystem;
+        const fs::path beside = fs::path(including).parent_path() / included;
+        if (!fs::exists(included) && fs::path(included).is_relative() && fs::is_regular_file(beside))
+          throw InputError(where + ": include " + in_quotes(included) +
+                           " does not exist in the working folder, which include statements start from; it "
+                           "exists beside the including file (include " +
+                           in_quotes(beside.string()) + ", or run from that folder)");
+        scan(included);
+      }
+
       std::vector<std::string>           open_files; // the chain of includes being read
       std::vector<std::string>           path;       // subsections entered
       std::map<std::string, std::string> set_at;     // entry -> where it was set

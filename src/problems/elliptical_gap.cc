@@ -145,9 +145,10 @@ namespace penny
           "front cells: postprocess/front_weight_bias.py), whose three sign changes on each side need "
           "finer meshes (at degree 2 with 16 cells along the front the error of K_I is about 10 % larger): "
           "for six digits. Units: none.");
-      entries.numbers("Ring radii", model.ring_radii, {0.1, 0.2, 0.4}, interval("()", 0, 1),
-                      "Radii rho of the J-integral tubes around the front, q = (1 - (d/rho)^2)^4 across "
-                      "it; below the smallest radius of curvature b^2/a of the front. Units: b^2/a.");
+      entries.increasing_numbers(
+          "Ring radii", model.ring_radii, {0.1, 0.2, 0.4}, 1, interval("()", 0, 1),
+          "Radii rho of the J-integral tubes around the front, q = (1 - (d/rho)^2)^4 across "
+          "it; below the smallest radius of curvature b^2/a of the front. Units: b^2/a.");
     });
   }
 

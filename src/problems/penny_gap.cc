@@ -281,15 +281,15 @@ namespace penny
   void ring_section(Sections &sections, std::vector<double> &ring_radii, const GeometryParameters &geometry)
   {
     sections.subsection("J-integral", [&](Entries &entries) {
-      entries.numbers(
-          "Ring radii", ring_radii, {0.25, 0.5, 0.75}, interval("()", 0, 1),
+      entries.increasing_numbers(
+          "Ring radii", ring_radii, {0.25, 0.5, 0.75}, 1, interval("()", 0, 1),
           "Outer radii of the J-integral domains around the tip, weight q = (1 - (d/rho)^2)^4; the "
           "searches use the last. Units: c.");
       if (!entries.reading())
         return;
       const double c          = geometry.gap_radius;
       const double room       = std::min(geometry.domain_height, geometry.domain_radius - c);
-      const double max_radius = *std::max_element(ring_radii.begin(), ring_radii.end());
+      const double max_radius = ring_radii.back();
       entries.require(max_radius * c < room, "Ring radii", max_radius,
                       "(0, min(H, R - c)/c = " + Utilities::to_string(room / c) + ")");
     });

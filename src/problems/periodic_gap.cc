@@ -40,10 +40,11 @@ namespace penny
       entries.number("Grading distance", model.grading_distance, 3, interval("[]", 0.5, 10),
                      "A cell is refined while it lies closer to the tip than this many of its own widths; "
                      "larger values give more cells per ring. Units: cell widths.");
-      entries.numbers("Ring radii", ring_radii, {0.25, 0.5, 0.75}, interval("()", 0, 1),
-                      "Outer radii of the J-integral domains around the tip, weight q = (1 - (d/rho)^2)^4; "
-                      "inside the domain for every c below 4 D/lambda too. The searches use the last. "
-                      "Units: min(c, lambda/2 - c).");
+      entries.increasing_numbers(
+          "Ring radii", ring_radii, {0.25, 0.5, 0.75}, 1, interval("()", 0, 1),
+          "Outer radii of the J-integral domains around the tip, weight q = (1 - (d/rho)^2)^4; "
+          "inside the domain for every c below 4 D/lambda too. The searches use the last. "
+          "Units: min(c, lambda/2 - c).");
       // min(c, lambda/2 - c) is at most lambda/4: rings below 4 D/lambda stay above z = -D.
       const double largest = std::min(1., 4 * depth);
       for (const double rho : ring_radii)

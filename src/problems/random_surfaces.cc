@@ -1,6 +1,7 @@
 #include "problems/random_surfaces.h"
 
 #include "input/input_error.h"
+#include "parallel/memory_budget.h"
 #include "problems/rough_surface.h"
 #include "problems/solid.h"
 
@@ -36,15 +37,12 @@ namespace penny
   void SampledPowerLaws::entries(Entries &entries, const std::vector<double> &default_magnifications,
                                  const Range &magnification_range)
   {
-    entries.numbers("Hurst exponents", hurst_exponents, {0.25, 0.5, 0.75},
-                    interval("[)", smallest_hurst_exponent, 1),
-                    "One power law per H and zeta (replacing Roughness/Hurst exponent H). Units: none.");
-    entries.numbers(
-        "Magnifications", magnifications, default_magnifications, magnification_range,
-        "zeta of each power law, increasing (replacing Roughness/Magnification zeta). Units: none.");
-    for (std::size_t k = 1; entries.reading() && k < magnifications.size(); ++k)
-      entries.require(magnifications[k] > magnifications[k - 1], "Magnifications", magnifications[k],
-                      "increasing numbers in " + magnification_range.text);
+    entries.increasing_numbers(
+        "Hurst exponents", hurst_exponents, {0.25, 0.5, 0.75}, 1, interval("[)", smallest_hurst_exponent, 1),
+        "One power law per H and zeta (replacing Roughness/Hurst exponent H). Units: none.");
+    entries.increasing_numbers(
+        "Magnifications", magnifications, default_magnifications, 1, magnification_range,
+        "zeta of each power law (replacing Roughness/Magnification zeta). Units: none.");
   }
 
   PeriodicGrid surface_grid(const RandomSurfaceParameters &surfaces, const PowerSpectrum &spectrum)
@@ -60,6 +58,17 @@ namespace penny
         throw InputError(message.str());
       }
     return square_grid(surfaces.n_points, surfaces.period * 2 * M_PI / q0);
+  }
+
+  void check_grid_memory(const RandomSurfaceParameters &surfaces, const double bytes_per_point,
+                         const MPI_Comm communicator)
+  {
+    const double       points = std::pow(double(surfaces.n_points), 2);
+    std::ostringstream need;
+    need.precision(2);
+    need << "Random surfaces/Grid points per side = " << surfaces.n_points << ": " << points
+         << " grid points need about";
+    check_memory_need(bytes_per_point * points, need.str(), communicator);
   }
 
   Estimate mean_over(const std::vector<std::vector<double>> &rows, const std::size_t column)

@@ -9,6 +9,8 @@
 #include "statistics/roughness.h"
 #include "statistics/summit_statistics.h"
 
+#include <mpi.h>
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -53,6 +55,13 @@ namespace penny
   // zeta q0; throws InputError naming Random surfaces/Grid points per side
   // unless its shortest wavelength spans at least 4 points.
   PeriodicGrid surface_grid(const RandomSurfaceParameters &surfaces, const PowerSpectrum &spectrum);
+
+  // Throws InputError naming Random surfaces/Grid points per side if a
+  // rank's grids, `bytes_per_point` for each of the N^2 points (measured per
+  // scene: each rank solves whole realisations), would not fit in the memory
+  // each rank of the run may take. Collective on `communicator`.
+  void check_grid_memory(const RandomSurfaceParameters &surfaces, double bytes_per_point,
+                         MPI_Comm communicator);
 
   // Mean and standard error of the mean over the rows' `column` (one row a realisation).
   Estimate mean_over(const std::vector<std::vector<double>> &rows, std::size_t column);

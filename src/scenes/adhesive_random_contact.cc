@@ -81,14 +81,14 @@ namespace penny
       void entries(Entries &entries) override
       {
         power_laws.entries(entries, {4, 8, 16}, interval("[]", 2, 256));
-        entries.numbers(
-            "Adhesion p0/sqrt(V)", adhesion_ratios, {1}, interval("[]", 1e-3, 20),
+        entries.increasing_numbers(
+            "Adhesion p0/sqrt(V)", adhesion_ratios, {1}, 1, interval("[]", 1e-3, 20),
             "p0/sqrt(V) at the first magnification, p0 = psi (K_Ic^4/R_p)^(1/5) with R_p and V of "
             "the sampled lattice's summits (Kac-Rice), one study each: this fixes w = K_Ic^2/(2 E*) "
             "of each H for every magnification. Units: none.");
-        entries.numbers("Mean pressures", mean_pressures, {0, 0.5, 1, 1.5, 2},
-                        interval("[]", 0, 100, "sqrt(V)"),
-                        "p_bar/sqrt(V), increasing: the states of the loading path. Units: sqrt(V).");
+        entries.increasing_numbers("Mean pressures", mean_pressures, {0, 0.5, 1, 1.5, 2}, 1,
+                                   interval("[]", 0, 100, "sqrt(V)"),
+                                   "p_bar/sqrt(V): the states of the loading path. Units: sqrt(V).");
         entries.number(
             "First contact load", first_contact, 0.25, interval("(]", 0, 100, "sqrt(V)"),
             "p_s/sqrt(V): the surfaces are first pressed together without adhesion at p_s; then "
@@ -103,9 +103,6 @@ namespace penny
                         "Realisation k uses realisation_seed(Seed, k). Units: none.");
         if (!entries.reading())
           return;
-        for (std::size_t k = 1; k < mean_pressures.size(); ++k)
-          entries.require(mean_pressures[k] > mean_pressures[k - 1], "Mean pressures", mean_pressures[k],
-                          "increasing numbers in [0, 100] sqrt(V)");
         // Beyond 8192 points a side a solve outgrows this verifier's memory.
         const double finest = zones.points_per_zone * power_laws.magnifications.back() / zones.lengths.back();
         entries.require(finest <= 8192, "Cohesive zones l_pz/lambda1", zones.lengths.back(),

@@ -58,8 +58,9 @@ namespace penny
 
       void entries(Entries &entries) override
       {
-        entries.numbers("Adhesionless load ratios", load_ratios, {0.9, 0.95, 0.98, 0.99},
-                        interval("()", 0, 1), "p_bar/p* of the adhesionless loading path. Units: none.");
+        entries.increasing_numbers("Adhesionless load ratios", load_ratios, {0.9, 0.95, 0.98, 0.99}, 1,
+                                   interval("()", 0, 1),
+                                   "p_bar/p* of the adhesionless loading path. Units: none.");
         entries.integer("Adhesionless grid", adhesionless_points, 1024u, 16u, 8192u,
                         "Points per side of the cell lambda/sqrt(2) without adhesion. Units: none.");
         entries.decreasing_numbers(

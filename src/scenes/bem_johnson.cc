@@ -41,23 +41,23 @@ namespace penny
       {
         entries.numbers("Johnson parameters alpha", alphas, {0.05, 0.2, 0.5}, interval("[]", 0.01, 0.56),
                         "alpha = K_Ic/(p* sqrt(lambda)), one curve and one jump each. Units: none.");
-        entries.numbers("Contact half-widths a/lambda", ratios, {0.1, 0.15, 0.2, 0.25, 0.3},
-                        interval("[]", 0.1, 0.4), "Where p_bar/p* is tabulated. Units: lambda.");
+        entries.increasing_numbers("Contact half-widths a/lambda", ratios, {0.1, 0.15, 0.2, 0.25, 0.3}, 1,
+                                   interval("[]", 0.1, 0.4), "Where p_bar/p* is tabulated. Units: lambda.");
         entries.decreasing_numbers(
             "Cohesive zones l_pz/lambda", zones, {1e-3, 5e-4, 2.5e-4, 1.25e-4}, 2, interval("[]", 1e-6, 0.02),
             "l_pz = E* rho^2/(pi w) of the exponential law, extrapolated to 0 through the finest four "
             "(exponents 1, 1.5, 2; the jump 2, 2.5, 3); at most c_min/8 at every alpha, c_min = "
             "(alpha/4)^(2/5) lambda/pi the gap's half-width at Johnson's jump. Units: lambda.");
-        entries.numbers("Points per cohesive zone", points_per_zone, {16, 32},
-                        interval("[]", HalfSpaceContact::min_process_zone_points, 1000),
-                        "One value, or two increasing for an extrapolation in the grid spacing "
-                        "(exponent 2); the grid is the next power of two above points/(l_pz/lambda). "
-                        "Units: none.");
+        entries.increasing_numbers(
+            "Points per cohesive zone", points_per_zone, {16, 32}, 1,
+            interval("[]", HalfSpaceContact::min_process_zone_points, 1000),
+            "One value, or two for an extrapolation in the grid spacing "
+            "(exponent 2); the grid is the next power of two above points/(l_pz/lambda). "
+            "Units: none.");
         if (!entries.reading())
           return;
-        entries.require(points_per_zone.size() <= 2 &&
-                            (points_per_zone.size() == 1 || points_per_zone[1] > points_per_zone[0]),
-                        "Points per cohesive zone", points_per_zone.back(), "one value, or two increasing");
+        entries.require(points_per_zone.size() <= 2, "Points per cohesive zone", points_per_zone.back(),
+                        "one value, or two increasing");
         // A zone above 1/8 of the gap's half-width at the jump, c_min = (alpha/4)^(2/5)
         // lambda/pi, leaves the JKR regime before the path reaches the jump.
         for (const double alpha : alphas)

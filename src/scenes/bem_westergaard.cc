@@ -43,6 +43,17 @@ namespace penny
       {
         material_section(sections, material);
         contact_solver_section(sections, control, 1e-12);
+        // The pressures are formed in Pa; beyond the range every traction
+        // keeps they vanish or overflow (h0/lambda = 1e-60 passed with a
+        // half-width error of 0, every pressure zero).
+        sections.check([&] {
+          const double scale = M_PI * material.plane_strain_modulus() / wavelength; // p* per metre of h0
+          sections.require(scale * amplitude >= smallest_magnitude && scale * amplitude <= largest_magnitude,
+                           "BEM Westergaard/Amplitude h0", amplitude,
+                           "p* = pi E* h0/lambda in [1e-30, 1e30] Pa: [" +
+                               Table::label(smallest_magnitude / scale, 3) + ", " +
+                               Table::label(largest_magnitude / scale, 3) + "] m");
+        });
       }
 
       void entries(Entries &entries) override
@@ -61,11 +72,12 @@ namespace penny
           entries.require(sizes[k] == grid_sizes[k] && grid_sizes[k] % 2 == 0 &&
                               (k == 0 || grid_sizes[k] > grid_sizes[k - 1]),
                           "Grid sizes", sizes[k], "even whole numbers, increasing");
-        entries.numbers("Load ratios", load_ratios, {0.2, 0.5, 0.8}, interval("()", 0, 1),
-                        "p_bar/p* of the solves, where the coarsest grid resolves the strip and the gap: "
-                        "a contact half-width of at least 0.05 lambda + 2 points (the pressure is compared "
-                        "more than 0.05 lambda inside the edges) and 5 points of gap beside the edge (the "
-                        "sub-grid edge is fitted to them). Units: none.");
+        entries.increasing_numbers(
+            "Load ratios", load_ratios, {0.2, 0.5, 0.8}, 1, interval("()", 0, 1),
+            "p_bar/p* of the solves, where the coarsest grid resolves the strip and the gap: "
+            "a contact half-width of at least 0.05 lambda + 2 points (the pressure is compared "
+            "more than 0.05 lambda inside the edges) and 5 points of gap beside the edge (the "
+            "sub-grid edge is fitted to them). Units: none.");
         entries.number(
             "Half-width tolerance", half_width_tolerance, 1e-3, above(0),
             "The verdict: |a - a_Westergaard|/lambda at the finest grid, every load. Units: none.");

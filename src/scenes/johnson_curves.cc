@@ -25,9 +25,10 @@ namespace penny
 
       void entries(Entries &entries) override
       {
-        entries.numbers("Johnson parameters alpha", alphas, {0, 0.2, 0.4, 0.6}, at_least(0),
-                        "alpha = K_Ic/(p* sqrt(lambda)), one curve each (Johnson's alpha^2 = 2 lambda "
-                        "dgamma/(pi^2 E* h^2)). Units: none.");
+        entries.increasing_numbers(
+            "Johnson parameters alpha", alphas, {0, 0.2, 0.4, 0.6}, 1, at_least(0),
+            "alpha = K_Ic/(p* sqrt(lambda)), one curve each (Johnson's alpha^2 = 2 lambda "
+            "dgamma/(pi^2 E* h^2)). Units: none.");
         entries.integer(
             "Number of points", n_points, 24u, 1u, 1000u,
             "Contact half-widths a/lambda = i/(2 (n + 1)), i = 1 ... n; each is one FE solve of the two "

@@ -26,13 +26,11 @@ namespace penny
       void entries(Entries &entries) override
       {
         // Beyond 1e30 the spectral moments leave the range of a double.
-        entries.numbers(
-            "Fit magnifications", fit, {1e12, 1e16}, interval("(]", 1, 1e30),
-            "The zeta range of the least-squares fit of theta: two numbers, increasing. Units: none.");
-        if (!entries.reading())
-          return;
-        entries.require(fit.size() == 2, "Fit magnifications", fit.size(), "two numbers");
-        entries.require(fit[1] > fit[0], "Fit magnifications", fit[1], "(first, 1e30]");
+        entries.increasing_numbers("Fit magnifications", fit, {1e12, 1e16}, 2, interval("(]", 1, 1e30),
+                                   "The zeta range of the least-squares fit of theta: two numbers. Units: "
+                                   "none.");
+        if (entries.reading())
+          entries.require(fit.size() == 2, "Fit magnifications", fit.size(), "two numbers");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override

@@ -34,8 +34,8 @@ namespace penny
 
       void entries(Entries &entries) override
       {
-        entries.numbers(
-            "Depths", depths, {0.25, 0.5, 0.75, 1, 1.5, 2, 3}, interval("(]", 0, 100, "lambda"),
+        entries.increasing_numbers(
+            "Depths", depths, {0.25, 0.5, 0.75, 1, 1.5, 2, 3}, 1, interval("(]", 0, 100, "lambda"),
             "Depths D of the truncated solid, one solve each, in place of 'Periodic gap/Depth D'. Units: "
             "lambda.");
       }

@@ -114,7 +114,7 @@ namespace penny
   SceneFile read_scene_file(const std::string &filename)
   {
     const ParameterFile file = read_parameter_file(filename);
-    const SceneType    &type = find_scene(file.scene.empty() ? default_scene : file.scene);
+    const SceneType    &type = find_scene(file.scene.value_or(default_scene));
     SceneFile           scene{&type, create(type), "", "", {file.files.begin(), file.files.end()}};
     ParameterHandler    prm;
     declare(prm, type, *scene.scene, scene.output_directory);

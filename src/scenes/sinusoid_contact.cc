@@ -15,8 +15,8 @@ namespace penny
     {
       void entries(Entries &entries) override
       {
-        entries.numbers(
-            "Johnson parameters alpha", alphas, {0, 0.2, 0.4, 0.6}, at_least(0),
+        entries.increasing_numbers(
+            "Johnson parameters alpha", alphas, {0, 0.2, 0.4, 0.6}, 1, at_least(0),
             "alpha^2 = 2 lambda dgamma/(pi^2 E* h^2) of Johnson's adhesive 1D sinusoid, one curve each. "
             "Units: none.");
         entries.integer("Number of points", n_points, 199u, 2u, 100000u,
