@@ -2,12 +2,14 @@
 // sinusoid (contact half-width and pressure), equilibrium on a random surface
 // checked the other way round (the gap the reported pressure makes), full
 // contact, warm-started load sweeps, iterations that do not grow with the
-// grid, and errors as exceptions.
+// grid, the same solution in any units (the single-precision twin would
+// overflow or underflow in SI units at the extremes), and errors as exceptions.
 #define BOOST_TEST_MODULE half_space_contact
 #define BOOST_TEST_NO_MAIN
 #include "closed_forms/periodic_array.h"
 #include "contact/contact_geometry.h"
 #include "contact/half_space_contact.h"
+#include "numerics/relative_error.h"
 #include "statistics/random_field.h"
 #include "statistics/roughness.h"
 
@@ -70,6 +72,53 @@ BOOST_AUTO_TEST_CASE(westergaard_sinusoid_at_256_points)
         }
       BOOST_TEST(error < 1e-3 * ratio * p_star);
     }
+}
+
+BOOST_AUTO_TEST_CASE(the_same_solution_in_any_units)
+{
+  // Westergaard's sinusoid at p_bar/p* = 0.5 scaled by factors of up to 1e27
+  // in h0, lambda and E*: in SI units the single-precision stiffness or
+  // curvature overflowed or underflowed (h0 = 1e-30 m, lambda = 1e-25 m, E =
+  // 1e20 Pa gave NaN; lambda = 1e-10 m broke down). In the solver's own
+  // units the solutions agree with the unscaled one to rounding.
+  const unsigned int n     = 128;
+  const auto         solve = [&](const double height, const double length, const double modulus) {
+    const PeriodicGrid     grid{n, 4, lambda * length, 4 * lambda * length / n};
+    const FourierTransform transform(grid);
+    GridField              h = sinusoid(grid);
+    for (double &value : h)
+      value *= height;
+    const HalfSpaceContact contact(transform, h, E_star * modulus);
+    return contact.solve(0.5 * p_star * modulus * height / length, {10000, 1e-12});
+  };
+  const ContactSolution reference = solve(1, 1, 1);
+  struct Units
+  {
+    double height, length, modulus;
+  };
+  for (const auto &[height, length, modulus] :
+       std::vector<Units>{{1e-24, 1e-22, 1e13}, {1e26, 1e28, 1}, {1e-24, 1e-27, 1e-37}})
+    {
+      const ContactSolution scaled = solve(height, length, modulus);
+      BOOST_TEST(scaled.residual <= 1e-12);
+      BOOST_TEST(scaled.iterations == reference.iterations);
+      double gap_error = 0, pressure_error = 0;
+      for (std::size_t i = 0; i < reference.gap.size(); ++i)
+        {
+          gap_error      = worse(gap_error, std::abs(scaled.gap[i] / height - reference.gap[i]) / h0);
+          pressure_error = worse(
+              pressure_error,
+              std::abs(scaled.pressure[i] / (modulus * height / length) - reference.pressure[i]) / p_star);
+        }
+      BOOST_TEST(gap_error < 1e-12);
+      BOOST_TEST(pressure_error < 1e-12);
+      BOOST_TEST(relative_error(scaled.energy / (modulus * height * height / length), reference.energy) <
+                 1e-12);
+    }
+  // An error that could not be measured is the worst, where std::max would drop it.
+  BOOST_TEST(std::isnan(worse(1, std::nan(""))));
+  BOOST_TEST(std::isnan(worse(std::nan(""), 1)));
+  BOOST_TEST(worse(1, 2) == 2);
 }
 
 BOOST_AUTO_TEST_CASE(equilibrium_on_a_random_surface)

@@ -170,18 +170,19 @@ namespace penny
     double       square = 0;
     for (const double h : heights_)
       square += (h - h_mean) * (h - h_mean);
-    height_scale = std::sqrt(transform.sum(square) / transform.grid().n_points());
-    if (!(height_scale > 0))
+    length_unit = std::sqrt(transform.sum(square) / transform.grid().n_points());
+    if (!(length_unit > 0))
       throw std::invalid_argument("contact solver: a flat surface is in full contact at any load");
 
     // The mean mode has no stiffness; the preconditioner gives it the
     // compliance of the longest wavelength of the period.
-    const PeriodicGrid &grid    = transform.grid();
-    const double        q_min   = 2 * M_PI / std::max(grid.nx > 1 ? grid.lx : 0, grid.ny > 1 ? grid.ly : 0);
-    const double        modulus = E_star;
-    const auto          stiffness_of  = [=](const Wavevector &q) { return modulus / 2 * q.norm(); };
-    const auto          compliance_of = [=](const Wavevector &q) {
-      return 2 / (modulus * (q.kx == 0 && q.ky == 0 ? q_min : q.norm()));
+    const PeriodicGrid &grid  = transform.grid();
+    const double        q_min = 2 * M_PI / std::max(grid.nx > 1 ? grid.lx : 0, grid.ny > 1 ? grid.ly : 0);
+    traction_unit             = E_star * q_min * length_unit;
+    scaled_adhesion           = {adhesion.work / (traction_unit * length_unit), adhesion.range / length_unit};
+    const auto stiffness_of   = [=](const Wavevector &q) { return q.norm() / (2 * q_min); };
+    const auto compliance_of  = [=](const Wavevector &q) {
+      return q.kx == 0 && q.ky == 0 ? 2. : 2 * q_min / q.norm();
     };
     stiffness        = transform.tabulate_real(stiffness_of);
     single_stiffness = single.tabulate_real(stiffness_of);
@@ -193,6 +194,8 @@ namespace penny
     transform.apply(transform.tabulate(compliance_of), impulse, impulse);
     point_compliance = transform.sum(transform.holds_first_row() ? impulse[0] : 0);
     full_contact     = full_contact_pressure(transform, heights_, E_star);
+    for (double &p : full_contact)
+      p /= traction_unit;
 
     // The halved problems of nested iteration, built once for every cold start.
     if (const std::optional<PeriodicGrid> grid = halved(transform.grid(), 128); grid && !adhesion.active())
@@ -287,9 +290,14 @@ namespace penny
                                              [](double g) { return g >= 0 && std::isfinite(g); })))
       throw std::invalid_argument("contact solver: the initial gap must be finite and >= 0");
 
-    const bool    fixed_load = control == Control::mean_pressure;
-    const bool    adhesive   = adhesion_.active();
-    double *const work       = transform_.work_array(); // the gap and K g, when K g is recomputed
+    // From here on in the units L and T; `target` is the mean pressure or gap.
+    const bool      fixed_load = control == Control::mean_pressure;
+    const double    target     = value / (fixed_load ? traction_unit : length_unit);
+    const Adhesion &adhesion   = scaled_adhesion;
+    const bool      adhesive   = adhesion.active();
+    for (double &g : gap)
+      g /= length_unit;
+    double *const work = transform_.work_array(); // the gap and K g, when K g is recomputed
     // The change of the gap and K of it; P_F r and C P_F r; the direction d.
     float *const preconditioned = single.work_array();
     const auto   each_point     = [&](auto &&f) { transform_.for_each_point(f); };
@@ -311,7 +319,7 @@ namespace penny
     };
     const std::unique_ptr<Point[]> point(new Point[n]);
     const auto                     free = [&](const std::size_t i) { return point[i] != Point::held; };
-    double                         mu   = value;
+    double                         mu   = target;
 
     // At a prescribed mean gap: shift step by a multiple of P_F C P_F 1 so
     // that it keeps the mean of g, and mu and the gradient with it.
@@ -391,7 +399,7 @@ namespace penny
           single.convolve_work_array(single_stiffness);
         if (adhesive)
           for (std::size_t i = 0; i < n; ++i)
-            slope[i] = gap[i] < adhesion_.reach() ? adhesion_.slope(gap[i]) : 0;
+            slope[i] = gap[i] < adhesion.reach() ? adhesion.slope(gap[i]) : 0;
         if (iteration == 0 && !fixed_load)
           {
             // mu starts as the traction that balances the gap points on average
@@ -439,7 +447,7 @@ namespace penny
           previous_overlap += previous_gradient[i] * s;
         });
         const auto sums = transform_.sums(square, product, previous_overlap);
-        residual        = std::sqrt(sums[0] / n_points) / height_scale;
+        residual        = std::sqrt(sums[0] / n_points);
         if (residual <= solver.tolerance)
           {
             if (recomputed)
@@ -461,8 +469,7 @@ namespace penny
           slope_along = new_direction(0);
 
         const double curvature = n_points * single.quadratic_form_of_work_array(single_stiffness);
-        const double alpha =
-            step_length(transform_, adhesion_, slope_along, curvature, gap, direction, slope);
+        const double alpha = step_length(transform_, adhesion, slope_along, curvature, gap, direction, slope);
 
         // The step, clipped at the wall (a clipped point forgets its
         // direction), and the gap's change in the single-precision array.
@@ -487,10 +494,10 @@ namespace penny
         recomputed = !fixed_load && on_any_rank(transform_, clipped);
         if (recomputed)
           {
-            const double scale = value / mean(transform_, gap);
+            const double scale = target / mean(transform_, gap);
             each_point([&](const std::size_t i, const std::size_t w) { work[w] = gap[i] *= scale; });
           }
-        if (fixed_load && !(value > 0) && transform_.minimum(smallest_gap) >= adhesion_.reach())
+        if (fixed_load && !(target > 0) && transform_.minimum(smallest_gap) >= adhesion.reach())
           throw std::runtime_error(
               formatted("contact solver: the surfaces separate at p_bar = %g Pa (no equilibrium "
                         "in contact: beyond the pull-off load)",
@@ -500,10 +507,11 @@ namespace penny
         ++iteration;
       }
 
+    // Back to Pa and m.
     ContactSolution solution;
     solution.coarse_iterations = 0;
-    solution.mean_pressure     = mu;
-    solution.mean_gap          = mean(transform_, gap);
+    solution.mean_pressure     = mu * traction_unit;
+    solution.mean_gap          = mean(transform_, gap) * length_unit;
     solution.iterations        = iteration;
     solution.residual          = residual;
     solution.pressure.resize(n);
@@ -511,16 +519,19 @@ namespace penny
     for (std::size_t i = 0; i < n; ++i)
       {
         solution.pressure[i] =
-            (gap[i] > 0 ? 0 : std::max(elastic_traction[i] + mu + attraction(i), 0.)) - attraction(i);
-        elastic += (gap[i] + heights_[i]) * elastic_traction[i];
+            traction_unit *
+            ((gap[i] > 0 ? 0 : std::max(elastic_traction[i] + mu + attraction(i), 0.)) - attraction(i));
+        elastic += (gap[i] + heights_[i] / length_unit) * elastic_traction[i];
         if (adhesive)
-          interaction += adhesion_.energy(gap[i]);
+          interaction += adhesion.energy(gap[i]);
         contact += gap[i] == 0;
       }
     const auto sums           = transform_.sums(elastic, interaction, contact);
-    solution.energy           = (sums[0] / 2 + sums[1]) / n_points;
+    solution.energy           = (sums[0] / 2 + sums[1]) / n_points * traction_unit * length_unit;
     solution.contact_fraction = sums[2] / n_points;
     solution.gap              = std::move(gap);
+    for (double &g : solution.gap)
+      g *= length_unit;
     return solution;
   }
 

@@ -117,19 +117,24 @@ namespace penny
     ContactSolution minimise(Control control, double value, const ContactSolverControl &solver,
                              GridField gap) const;
 
-    const FourierTransform          &transform_;
-    GridField                        heights_;
-    double                           E_star;
-    Adhesion                         adhesion_;
-    double                           height_scale; // rms of h about its mean
-    GridField                        full_contact; // p_fc (Pa)
-    FourierTransform::RealMultiplier stiffness;    // (E*/2) |q|, zero at q = 0
+    const FourierTransform &transform_;
+    GridField               heights_;
+    double                  E_star;
+    Adhesion                adhesion_;
+    // The iteration runs in units of the rms height L of h about its mean
+    // and of the traction T = E* q_min L (q_min the longest wavelength's
+    // wavenumber), in which every field is of order one on any grid and
+    // scale: single precision keeps 8 decades, not double's 300.
+    double                           length_unit, traction_unit;
+    Adhesion                         scaled_adhesion; // w/(T L), rho/L
+    GridField                        full_contact;    // p_fc/T
+    FourierTransform::RealMultiplier stiffness;       // K/(E* q_min) = |q|/(2 q_min), zero at q = 0
     // Single precision, on the same grid and split, for the preconditioner C,
     // the curvature d.Kd and the updates K (g_new - g) of the traction, which
     // is recomputed in double precision before a solution is accepted.
     SingleFourierTransform                 single;
     SingleFourierTransform::RealMultiplier single_stiffness;
-    SingleFourierTransform::RealMultiplier compliance; // 2/(E* |q|), 2/(E* q_min) at q = 0
+    SingleFourierTransform::RealMultiplier compliance; // C E* q_min = 2 q_min/|q|, 2 at q = 0
     double point_compliance; // the diagonal of C: the displacement of a point under its own unit load
     // Without adhesion: the problem on the grid halved in each direction, for
     // nested iteration (none if the grid cannot be halved).

@@ -163,21 +163,28 @@ namespace penny
                         const std::vector<double> &defaults, const Range &range,
                         const std::string &documentation)
   {
+    number_list(entry, values, defaults, range, "a list of", documentation);
+  }
+
+  void Entries::number_list(const std::string &entry, std::vector<double> &values,
+                            const std::vector<double> &defaults, const Range &range, const std::string &kind,
+                            const std::string &documentation)
+  {
     if (!reading_)
       {
         std::vector<std::string> texts;
         for (const double x : defaults)
           texts.push_back(shortest(x));
         prm.declare_entry(entry, joined(texts, ", "), Patterns::Anything(),
-                          documented(documentation, "a list of numbers in " + range.text));
+                          documented(documentation, kind + " numbers in " + range.text));
         return;
       }
     values.clear();
     // deal.II's split drops an empty last item: "1, 2," would read as "1, 2".
     const std::string text = dealii::Utilities::trim(prm.get(entry));
     if (!text.empty() && text.back() == ',')
-      throw InputError(name(entry) + " = " + in_quotes(text) + " ends with a comma: a list of numbers in " +
-                       range.text);
+      throw InputError(name(entry) + " = " + in_quotes(text) + " ends with a comma: " + kind +
+                       " numbers in " + range.text);
     for (const std::string &item : dealii::Utilities::split_string_list(text))
       {
         require_decimal(name(entry), item, range.text);
@@ -241,14 +248,10 @@ namespace penny
                                 const std::vector<double> &defaults, const std::size_t min_count,
                                 const Range &range, const bool increasing, const std::string &documentation)
   {
-    const std::string order   = increasing ? "increasing" : "decreasing";
-    const std::string allowed = (min_count > 1 ? "at least " + std::to_string(min_count) + " " : "") +
-                                "numbers in " + range.text + ", each " + (increasing ? "above" : "below") +
-                                " the one before";
-    numbers(entry, values, defaults, range,
-            documentation + (min_count > 1 ? " At least " + std::to_string(min_count) + ", " + order + "."
-                             : increasing  ? " Increasing."
-                                           : " Decreasing."));
+    const std::string kind = std::string(increasing ? "an increasing" : "a decreasing") + " list of" +
+                             (min_count > 1 ? " at least " + std::to_string(min_count) : "");
+    number_list(entry, values, defaults, range, kind, documentation);
+    const std::string allowed = kind + " numbers in " + range.text;
     if (!reading_)
       return;
     if (values.size() < min_count)

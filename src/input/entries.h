@@ -144,6 +144,10 @@ namespace penny
     bool reading() const { return reading_; }
 
   private:
+    // A comma-separated list, documented as KIND ("a list of") numbers in `range`.
+    void number_list(const std::string &entry, std::vector<double> &values,
+                     const std::vector<double> &defaults, const Range &range, const std::string &kind,
+                     const std::string &documentation);
     void ordered_numbers(const std::string &entry, std::vector<double> &values,
                          const std::vector<double> &defaults, std::size_t min_count, const Range &range,
                          bool increasing, const std::string &documentation);

@@ -14,6 +14,13 @@ namespace penny
     return reference == 0 ? std::abs(value) : std::abs(value / reference - 1);
   }
 
+  // The larger of two errors, NaN if either is: an error that could not be
+  // measured must fail every tolerance, where std::max would drop it.
+  inline double worse(const double a, const double b)
+  {
+    return std::isnan(a) || std::isnan(b) ? std::nan("") : std::max(a, b);
+  }
+
   // The largest relative_error(values[i], references[i]); 0 for empty lists.
   inline double largest_relative_error(const std::vector<double> &values,
                                        const std::vector<double> &references)
@@ -22,7 +29,7 @@ namespace penny
       throw std::invalid_argument("largest_relative_error: the lists differ in length");
     double worst = 0;
     for (std::size_t i = 0; i < values.size(); ++i)
-      worst = std::max(worst, relative_error(values[i], references[i]));
+      worst = worse(worst, relative_error(values[i], references[i]));
     return worst;
   }
 } // namespace penny

@@ -271,7 +271,7 @@ namespace penny
     for (const double phi : solved.angles)
       solved.exact_sifs.push_back(exact.stress_intensity_factor(phi));
     for (const auto &ring : solved.signed_sifs)
-      solved.largest_error = std::max(solved.largest_error, largest_relative_error(ring, solved.exact_sifs));
+      solved.largest_error = worse(solved.largest_error, largest_relative_error(ring, solved.exact_sifs));
     if (circle)
       {
         TimerOutput::Scope scope(timer, "axisymmetric model");

@@ -310,7 +310,7 @@ namespace penny
       {
         const double modulus_error = relative_error(ring.stress_intensity_factor, std::abs(exact));
         const double signed_error  = relative_error(ring.signed_stress_intensity_factor, exact);
-        worst                      = std::max({worst, modulus_error, signed_error});
+        worst                      = worse(worse(worst, modulus_error), signed_error);
         table.add_row({ring.radius, ring.energy_release_rate, ring.stress_intensity_factor,
                        ring.signed_stress_intensity_factor, exact, modulus_error, signed_error});
       }

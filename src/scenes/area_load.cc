@@ -3,6 +3,7 @@
 // exact gap law, the adhesionless law and Persson's form.
 #include "closed_forms/adhesive_gap.h"
 #include "closed_forms/periodic_array.h"
+#include "input/input_error.h"
 #include "numerics/relative_error.h"
 #include "output/table.h"
 #include "problems/rough_surface.h"
@@ -34,27 +35,35 @@ namespace penny
                              "A_nc(p_bar = 0), exact g"});
         for (const double hurst : range.hurst_exponents)
           for (const double zeta : range.magnifications)
-            {
-              const GapPopulation gaps = surface.population(hurst, zeta);
-              const GapPopulation adhesionless{gaps.prefactor, 0};
-              const auto          exact = exact_gap_law(gaps.adhesion);
-              for (unsigned int i = 0; i < range.mean_pressures.n_points; ++i)
-                {
-                  const double p_bar    = range.mean_pressures.at(i);
-                  const double closed   = linear_law_noncontact_area(gaps, p_bar);
-                  const double integral = noncontact_area(gaps, linear_gap_law(gaps.adhesion), p_bar);
-                  worst                 = std::max(worst, relative_error(integral, closed));
-                  // At negative loads the isolated-gap laws exceed the whole area:
-                  // flagged, they are no area fractions.
-                  const double exact_area = noncontact_area(gaps, exact, p_bar);
-                  table.add_row({hurst, zeta, gaps.adhesion, p_bar, closed, integral, exact_area,
-                                 linear_law_noncontact_area(adhesionless, p_bar),
-                                 persson_contact_area(gaps.adhesion, p_bar), persson_contact_area(0, p_bar),
-                                 closed > 1, exact_area > 1});
-                }
-              summary.add_row({hurst, zeta, gaps.adhesion, gaps.prefactor,
-                               linear_law_noncontact_area(gaps, 0), noncontact_area(gaps, exact, 0)});
-            }
+            try
+              {
+                const GapPopulation gaps = surface.population(hurst, zeta);
+                const GapPopulation adhesionless{gaps.prefactor, 0};
+                const auto          exact = exact_gap_law(gaps.adhesion);
+                for (unsigned int i = 0; i < range.mean_pressures.n_points; ++i)
+                  {
+                    const double p_bar    = range.mean_pressures.at(i);
+                    const double closed   = linear_law_noncontact_area(gaps, p_bar);
+                    const double integral = noncontact_area(gaps, linear_gap_law(gaps.adhesion), p_bar);
+                    worst                 = worse(worst, relative_error(integral, closed));
+                    // At negative loads the isolated-gap laws exceed the whole area:
+                    // flagged, they are no area fractions.
+                    const double exact_area = noncontact_area(gaps, exact, p_bar);
+                    table.add_row({hurst, zeta, gaps.adhesion, p_bar, closed, integral, exact_area,
+                                   linear_law_noncontact_area(adhesionless, p_bar),
+                                   persson_contact_area(gaps.adhesion, p_bar), persson_contact_area(0, p_bar),
+                                   closed > 1, exact_area > 1});
+                  }
+                summary.add_row({hurst, zeta, gaps.adhesion, gaps.prefactor,
+                                 linear_law_noncontact_area(gaps, 0), noncontact_area(gaps, exact, 0)});
+              }
+            catch (const std::runtime_error &error) // a closed form's root search out of its reach
+              {
+                throw InputError("Area-load/Hurst exponents = " + shortest(hurst) +
+                                 " with Magnifications = " + shortest(zeta) + ": " + error.what() +
+                                 " (the gaps span more sizes than the closed forms search; a larger H or a "
+                                 "smaller zeta)");
+              }
         results.write_csv("area-load.csv", table);
         log << "Area-load curves, A_nc/A_0 against p_bar/sqrt(V) from " << range.mean_pressures.smallest
             << " to " << range.mean_pressures.largest << " (paper Figs. 4 and 5)\n"

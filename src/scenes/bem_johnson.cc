@@ -9,6 +9,7 @@
 #include "closed_forms/periodic_array.h"
 #include "contact/adhesive_sinusoid.h"
 #include "contact/extrapolation.h"
+#include "numerics/relative_error.h"
 #include "output/progress.h"
 #include "problems/contact_solver.h"
 #include "problems/periodic_gap.h"
@@ -165,7 +166,7 @@ namespace penny
                      {limit.value, limit.error, std::abs(limit.value - johnson), std::abs(limit.value - fe)})
                   row.emplace_back(cell);
                 table.add_row(row);
-                worst = std::max(worst, std::abs(limit.value - johnson));
+                worst = worse(worst, std::abs(limit.value - johnson));
               }
           }
         publish(table, "bem-johnson.csv", results, log,

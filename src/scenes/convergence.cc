@@ -204,8 +204,8 @@ namespace penny
           for (const auto &ring : solved.rings)
             {
               row.push_back(ring.signed_stress_intensity_factor);
-              error = std::max(error, relative_error(ring.signed_stress_intensity_factor,
-                                                                         solved.exact_stress_intensity_factor.value));
+              error = worse(error, relative_error(ring.signed_stress_intensity_factor,
+                                                                      solved.exact_stress_intensity_factor.value));
             }
           row.push_back(error);
           auto   times = timer.get_summary_data(TimerOutput::total_wall_time);

@@ -82,11 +82,12 @@ namespace penny
     {
       double largest = 0;
       for (unsigned int k = 0; k < found.size(); ++k)
-        largest = std::max(
-            {largest, relative_error(found[k].adhesionless.aspect_ratio, exact[k].adhesionless.aspect_ratio),
-             relative_error(found[k].adhesionless.area_ratio, exact[k].adhesionless.area_ratio),
-             relative_error(found[k].adhesive.aspect_ratio, exact[k].adhesive.aspect_ratio),
-             relative_error(found[k].adhesive.tension, exact[k].adhesive.tension)});
+        for (const double error :
+             {relative_error(found[k].adhesionless.aspect_ratio, exact[k].adhesionless.aspect_ratio),
+              relative_error(found[k].adhesionless.area_ratio, exact[k].adhesionless.area_ratio),
+              relative_error(found[k].adhesive.aspect_ratio, exact[k].adhesive.aspect_ratio),
+              relative_error(found[k].adhesive.tension, exact[k].adhesive.tension)})
+          largest = worse(largest, error);
       return largest;
     }
 

@@ -77,7 +77,7 @@ namespace penny
             const double c0 = *closed_form::stable_gap_radius(std::max(P, p0), R_p, K_Ic);
             fe_areas.push_back(c * c / (3 * R_p * sqrt_V));
             exact_areas.push_back(exact(exact_P[j]));
-            worst_radius = std::max(worst_radius, relative_error(c, c0));
+            worst_radius = worse(worst_radius, relative_error(c, c0));
             gap_table.add_row({fe_P[j], c, c0, relative_error(c, c0)});
           }
         const auto fe_law      = tabulated_gap_law(fe_gaps.adhesion, t_max, fe_areas);
@@ -92,8 +92,8 @@ namespace penny
             const double fe        = noncontact_area(fe_gaps, fe_law, p_bar);
             const double reference = noncontact_area(exact_gaps, exact, p_bar);
             const double tabulated = noncontact_area(exact_gaps, exact_table, p_bar);
-            worst                  = std::max(worst, relative_error(fe, reference));
-            worst_table            = std::max(worst_table, relative_error(tabulated, reference));
+            worst                  = worse(worst, relative_error(fe, reference));
+            worst_table            = worse(worst_table, relative_error(tabulated, reference));
             table.add_row({p_bar, fe, reference, tabulated, relative_error(fe, reference)});
           }
         results.write_csv("fe-gap-table.csv", gap_table);

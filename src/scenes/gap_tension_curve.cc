@@ -51,7 +51,7 @@ namespace penny
             const double        p_fe   = (K_Ic + K.quadratic / (2 * R_p)) / K.uniform / p0;
             const double        exact  = (c_hat * c_hat + 4 / std::sqrt(c_hat)) / 5;
             const double        linear = c_hat * c_hat > 2.5 ? c_hat * c_hat / 5 + 0.5 : 1.;
-            worst                      = std::max(worst, relative_error(p_fe, exact));
+            worst                      = worse(worst, relative_error(p_fe, exact));
             table.add_row({c_hat, p_fe, exact, linear, relative_error(p_fe, exact)});
           }
         publish(table, "gap-tension-curve.csv", results, log);

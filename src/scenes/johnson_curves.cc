@@ -6,6 +6,7 @@
 // (postprocess/plot_johnson_curves.py). PASS when every FE p_bar/p* lies
 // within Verification/Tolerance of Johnson's.
 #include "closed_forms/periodic_array.h"
+#include "numerics/relative_error.h"
 #include "problems/periodic_gap.h"
 #include "scenes/scene.h"
 #include "searches/periodic_searches.h"
@@ -59,7 +60,7 @@ namespace penny
               {
                 const double fe    = fe_johnson_load(K, lambda, alphas[k]);
                 const double exact = periodic_array::johnson_load(ratio, alphas[k]);
-                worst[k]           = std::max(worst[k], std::abs(fe - exact));
+                worst[k]           = worse(worst[k], std::abs(fe - exact));
                 rows[k].push_back({alphas[k], ratio, fe, exact, std::abs(fe - exact)});
               }
           }

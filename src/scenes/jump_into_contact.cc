@@ -79,7 +79,7 @@ namespace penny
             const FeLoadExtremum fe    = maximum[i];
             const auto           exact = periodic_array::jump_into_contact(alpha);
             const double         law   = periodic_array::small_alpha_jump(alpha);
-            worst                      = std::max(worst, std::abs(fe.load_ratio - exact.load_ratio));
+            worst                      = worse(worst, std::abs(fe.load_ratio - exact.load_ratio));
             table.add_row({alpha, fe.contact_half_width / lambda, exact.contact_ratio, 1 - fe.load_ratio,
                            1 - exact.load_ratio, std::abs(fe.load_ratio - exact.load_ratio), law,
                            (1 - exact.load_ratio) / law});
@@ -91,7 +91,7 @@ namespace penny
         cost.add_row({"largest |p_bar_max/p* FE - Johnson|", Table::Cell(worst, Table::error_digits)});
         search.add_cost(cost);
         cost.print(log);
-        return verdict(std::max(relative_error(critical.alpha, periodic_array::critical_alpha), worst));
+        return verdict(worse(relative_error(critical.alpha, periodic_array::critical_alpha), worst));
       }
 
       PeriodicGapInput periodic;

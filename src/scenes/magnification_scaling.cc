@@ -29,8 +29,13 @@ namespace penny
         entries.increasing_numbers("Fit magnifications", fit, {1e12, 1e16}, 2, interval("(]", 1, 1e30),
                                    "The zeta range of the least-squares fit of theta: two numbers. Units: "
                                    "none.");
-        if (entries.reading())
-          entries.require(fit.size() == 2, "Fit magnifications", fit.size(), "two numbers");
+        if (!entries.reading())
+          return;
+        entries.require(fit.size() == 2, "Fit magnifications", fit.back(), "two numbers, no more");
+        // A log-log fit over less than a decade measures the rounding of the
+        // moments (1 + 1e-10 to 1 + 2e-10 gave theta = -2.7e9).
+        entries.require(fit[1] >= 10 * fit[0], "Fit magnifications", fit[1],
+                        "[10 x first = " + Table::label(10 * fit[0], 3) + ", 1e30]: a decade or more");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
@@ -48,8 +53,8 @@ namespace penny
             for (const Convention convention : {Convention::paper, Convention::consistent})
               fits[convention == Convention::consistent] =
                   fitted_scaling_exponent(hurst, fit[0], fit[1], 41, convention);
-            const double error = std::max(std::abs(fits[0] - theta), std::abs(fits[1] - theta));
-            worst              = std::max(worst, error);
+            const double error = worse(std::abs(fits[0] - theta), std::abs(fits[1] - theta));
+            worst              = worse(worst, error);
             table.add_row({hurst, theta, fits[0], fits[1], error});
           }
         log << "Magnification exponent: p0/sqrt(V) ~ zeta^theta, least-squares fit of the moments' values "

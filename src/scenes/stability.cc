@@ -44,7 +44,7 @@ namespace penny
     {
       double worst = 0;
       for (const auto &ring : results.rings)
-        worst = std::max(worst, relative_error(ring.signed_stress_intensity_factor, reference));
+        worst = worse(worst, relative_error(ring.signed_stress_intensity_factor, reference));
       return worst;
     }
 
@@ -150,9 +150,9 @@ namespace penny
                                                   std::sqrt(base.model.geometry.gap_radius / M_PI);
                              double error = 0;
                              for (const auto &ring : solved.rings)
-                               error = std::max(error, std::abs(ring.signed_stress_intensity_factor -
-                                                                solved.exact_stress_intensity_factor.value) /
-                                                           scale);
+                               error = worse(error, std::abs(ring.signed_stress_intensity_factor -
+                                                             solved.exact_stress_intensity_factor.value) /
+                                                        scale);
                              return outcome(solved, error);
                            }});
 

@@ -7,6 +7,7 @@
 // of the lattice expectation.
 #include "statistics/summit_statistics.h"
 #include "contact/half_space.h"
+#include "numerics/relative_error.h"
 #include "output/table.h"
 #include "parallel/spread_over_ranks.h"
 #include "problems/random_surfaces.h"
@@ -140,7 +141,7 @@ namespace penny
                   const double sampled = mean_over(rows, check.column).value,
                                error   = check.spread / std::sqrt(n);
                   const double off     = deviation(sampled, check.expected, error);
-                  worst                = std::max(worst, off);
+                  worst                = worse(worst, off);
                   moments_table.add_row({hurst, zeta, check.field, check.name, sampled, error, check.expected,
                                          check.continuum, off});
                 }
@@ -148,10 +149,10 @@ namespace penny
               const ExpectedSummits lattice    = expected_summits(pressure_lattice.expected);
               const PressureSummits consistent = pressure_summits(continuum, E_star, Convention::consistent);
               const PressureSummits paper      = pressure_summits(continuum, E_star, Convention::paper);
-              worst                            = std::max(
-                                             {worst, deviation(ensemble.density.value, lattice.density, ensemble.density.standard_error),
-                                              deviation(ensemble.mean_curvature.value, lattice.mean_curvature,
-                                                        ensemble.mean_curvature.standard_error)});
+              worst = worse(worse(worst, deviation(ensemble.density.value, lattice.density,
+                                                   ensemble.density.standard_error)),
+                            deviation(ensemble.mean_curvature.value, lattice.mean_curvature,
+                                      ensemble.mean_curvature.standard_error));
               const double kappa_consistent = 1 / consistent.summit_radius;
               summary.add_row(
                   {hurst, zeta, ensemble.n_summits, ensemble.density.value, ensemble.density.standard_error,

@@ -3,6 +3,7 @@
 // half-width of K_I = 0, beside p_bar/p* = sin^2(pi a/lambda). PASS when
 // |p_bar/p* - sin^2(pi a_FE/lambda)| is within Verification/Tolerance.
 #include "closed_forms/periodic_array.h"
+#include "numerics/relative_error.h"
 #include "parallel/spread_over_ranks.h"
 #include "problems/periodic_gap.h"
 #include "scenes/scene.h"
@@ -48,8 +49,8 @@ namespace penny
             const double fe_ratio = contact[i] / lambda;
             const double exact    = periodic_array::westergaard_contact_ratio(load);
             const double curve    = periodic_array::johnson_load(fe_ratio, 0);
-            worst_load            = std::max(worst_load, std::abs(curve - load));
-            worst_contact         = std::max(worst_contact, std::abs(fe_ratio - exact));
+            worst_load            = worse(worst_load, std::abs(curve - load));
+            worst_contact         = worse(worst_contact, std::abs(fe_ratio - exact));
             table.add_row({load, fe_ratio, exact, std::abs(fe_ratio - exact), curve, std::abs(curve - load)});
           }
         publish(table, "westergaard-curve.csv", results, log,

@@ -43,7 +43,7 @@ namespace penny
             const GapPopulation gaps{gaps_of.prefactor, adhesions.at(i)};
             const double        closed   = linear_law_noncontact_area(gaps, 0);
             const double        integral = noncontact_area(gaps, linear_gap_law(gaps.adhesion), 0);
-            worst                        = std::max(worst, relative_error(integral, closed));
+            worst                        = worse(worst, relative_error(integral, closed));
             table.add_row({gaps.adhesion, closed, integral,
                            noncontact_area(gaps, exact_gap_law(gaps.adhesion), 0),
                            persson_contact_area(gaps.adhesion, 0)});
