@@ -103,6 +103,9 @@ BOOST_AUTO_TEST_CASE(spectrum_file)
   const PowerSpectrum spectrum = read_power_spectrum(file.string());
   BOOST_TEST(spectrum.wavenumbers.size() == 2u);
   BOOST_TEST(spectrum.densities[1] == 2e-23);
+  // A UTF-8 byte-order mark before the first row is no text.
+  std::ofstream(file) << "\xEF\xBB\xBF" << "1e3 2e-20\n1e4 2e-23\n";
+  BOOST_TEST(read_power_spectrum(file.string()).wavenumbers.front() == 1e3);
 
   std::ofstream(file) << "1e3 2e-20\n1e2 2e-23\n";
   BOOST_CHECK_EXCEPTION(read_power_spectrum(file.string()), InputError, [](const InputError &e) {

@@ -116,6 +116,7 @@ int main(int argc, char **argv)
   MPI_Comm                                 errors;
   MPI_Comm_dup(MPI_COMM_WORLD, &errors);
   const std::string argument = argc >= 2 ? argv[1] : "";
+  const bool        blank    = argument.find_first_not_of(" \t") == std::string::npos;
   // Under mpirun every rank computes; rank 0 speaks.
   const bool    speaks = dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0;
   std::ostream  silent(nullptr);
@@ -133,12 +134,12 @@ int main(int argc, char **argv)
         {
           penny::print_parameters(penny::find_scene(argc == 3 ? argv[2] : penny::default_scene), log);
         }
-      else if (argc != 2 || argument.empty() || argument[0] == '-')
+      else if (argc != 2 || blank || argument[0] == '-')
         {
           if (speaks)
             std::cerr << "penny: error: "
-                      << (argc == 2 && argument.empty() ? "the parameter file's name is empty"
-                                                        : "expected one parameter file")
+                      << (argc == 2 && blank ? "the parameter file's name is empty"
+                                             : "expected one parameter file")
                       << " (try 'penny --help')" << std::endl;
           return 2;
         }

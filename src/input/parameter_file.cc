@@ -66,6 +66,21 @@ namespace penny
                                          "entered: (.*)$")))
           message = "line " + match[1].str() + ": subsection '" + match[2].str() + "' is not read by " +
                     which + " ('penny --print-parameters " + scene + "' lists what it reads)";
+        // A value outside a choice (Selection or Bool), named with its subsection, the choices listed.
+        else if (std::regex_search(
+                     message, match,
+                     std::regex("Line <([0-9]+)> of file <(.*)>: The entry value (.*) for the entry "
+                                "named .* does not match the given pattern: \\[(Selection (.*) |Bool)\\]$")))
+          {
+            const auto statement = file.statements.set_statements.find(
+                {std::filesystem::weakly_canonical(match[2].str()).string(), std::stoul(match[1].str())});
+            const std::string choices = match[4] == "Bool"
+                                            ? "true, false"
+                                            : std::regex_replace(match[5].str(), std::regex("\\|"), ", ");
+            if (statement != file.statements.set_statements.end())
+              message = statement->second.first + ": " + statement->second.second + " = " +
+                        in_quotes(match[3].str()) + " is not one of " + choices;
+          }
         // An entry the scene does not declare, named with its subsection.
         else if (std::regex_search(message, match,
                                    std::regex("Line <([0-9]+)> of file <(.*)>: No entry with name <.*> was "

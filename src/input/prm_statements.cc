@@ -86,10 +86,13 @@ namespace penny
                 const std::string name = dealii::Utilities::trim(rest.substr(0, rest.find('=')));
                 entry += name;
                 result.set_statements[{file, first}] = {where, entry};
-                const auto [earlier, first_time]     = set_at.emplace(entry, where);
+                const auto [earlier, first_time] =
+                    set_at.emplace(entry, std::make_pair(filename, "line " + std::to_string(first)));
+                const auto &[earlier_file, earlier_line] = earlier->second;
                 if (!first_time)
                   throw InputError(where + ": " + entry + " is set a second time (first on " +
-                                   earlier->second + "); set each entry once");
+                                   (earlier_file == filename ? "" : in_quotes(earlier_file) + ", ") +
+                                   earlier_line + "); set each entry once");
                 if (path.empty() && name == "Scene")
                   result.scene = dealii::Utilities::trim(rest.substr(rest.find('=') + 1));
               }
@@ -115,9 +118,10 @@ namespace penny
         scan(included);
       }
 
-      std::vector<std::string>           open_files; // the chain of includes being read
-      std::vector<std::string>           path;       // subsections entered
-      std::map<std::string, std::string> set_at;     // entry -> where it was set
+      std::vector<std::string> open_files; // the chain of includes being read
+      std::vector<std::string> path;       // subsections entered
+      std::map<std::string, std::pair<std::string, std::string>>
+          set_at; // entry -> (file, "line N") setting it
     };
   } // namespace
 

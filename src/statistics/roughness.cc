@@ -26,6 +26,9 @@ namespace penny
     std::string   line;
     for (unsigned int number = 1; std::getline(in, line); ++number)
       {
+        // A UTF-8 byte-order mark, as some editors write, is no text.
+        if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0)
+          line.erase(0, 3);
         line = line.substr(0, line.find('#'));
         if (line.find_first_not_of(" \t\r") == std::string::npos)
           continue;
