@@ -124,7 +124,8 @@ namespace penny
     // The iteration runs in units of the rms height L of h about its mean
     // and of the traction T = E* q_min L (q_min the longest wavelength's
     // wavenumber), in which every field is of order one on any grid and
-    // scale: single precision keeps 8 decades, not double's 300.
+    // scale: single precision spans 1e-38 to 3e38, which SI values at the
+    // ends of the input ranges left (E* |q|/2 overflowed, d.Kd underflowed).
     double                           length_unit, traction_unit;
     Adhesion                         scaled_adhesion; // w/(T L), rho/L
     GridField                        full_contact;    // p_fc/T
