@@ -57,9 +57,17 @@ namespace penny
         // The scene as the messages below name it.
         const std::string which =
             "Scene = " + scene + (file.scene ? "" : ", the default, as the file sets no Scene");
+        std::smatch match;
+        // The set statement at the line and file of `match` ([1] and [2]):
+        // where it is, as messages name it, and its "Subsection/Name"; none
+        // if deal.II names a line the scan did not see as one.
+        const auto statement = [&]() -> const std::pair<std::string, std::string> * {
+          const auto found = file.statements.set_statements.find(
+              {std::filesystem::weakly_canonical(match[2].str()).string(), std::stoul(match[1].str())});
+          return found == file.statements.set_statements.end() ? nullptr : &found->second;
+        };
         // With only the scene's subsections declared, any other subsection
         // is one the scene does not read.
-        std::smatch match;
         if (typeid(exception) == typeid(ParameterHandler::ExcNoSubsection) &&
             std::regex_search(message, match,
                               std::regex("Line <([0-9]+)> of file <.*: There is no such subsection to be "
@@ -72,25 +80,21 @@ namespace penny
                      std::regex("Line <([0-9]+)> of file <(.*)>: The entry value (.*) for the entry "
                                 "named .* does not match the given pattern: \\[(Selection (.*) |Bool)\\]$")))
           {
-            const auto statement = file.statements.set_statements.find(
-                {std::filesystem::weakly_canonical(match[2].str()).string(), std::stoul(match[1].str())});
             const std::string choices = match[4] == "Bool"
                                             ? "true, false"
                                             : std::regex_replace(match[5].str(), std::regex("\\|"), ", ");
-            if (statement != file.statements.set_statements.end())
-              message = statement->second.first + ": " + statement->second.second + " = " +
-                        in_quotes(match[3].str()) + " is not one of " + choices;
+            if (const auto set = statement())
+              message = set->first + ": " + set->second + " = " + in_quotes(match[3].str()) +
+                        " is not one of " + choices;
           }
         // An entry the scene does not declare, named with its subsection.
         else if (std::regex_search(message, match,
                                    std::regex("Line <([0-9]+)> of file <(.*)>: No entry with name <.*> was "
                                               "declared in the current subsection")))
           {
-            const auto statement = file.statements.set_statements.find(
-                {std::filesystem::weakly_canonical(match[2].str()).string(), std::stoul(match[1].str())});
-            if (statement != file.statements.set_statements.end())
-              message = statement->second.first + ": " + statement->second.second + " is not an entry of " +
-                        which + " ('penny --print-parameters " + scene + "' lists them)";
+            if (const auto set = statement())
+              message = set->first + ": " + set->second + " is not an entry of " + which +
+                        " ('penny --print-parameters " + scene + "' lists them)";
           }
         throw InputError(message);
       }

@@ -79,4 +79,14 @@ namespace penny
             << ", after " << gib(library_reserve) << " for the libraries)";
     throw InputError(message.str());
   }
+
+  void check_grid_memory(const unsigned int n_points, const double bytes_per_point,
+                         const std::string &entries, const MPI_Comm communicator)
+  {
+    const double       points = double(n_points) * n_points;
+    std::ostringstream need;
+    need.precision(2);
+    need << entries << ": " << points << " grid points need about";
+    check_memory_need(bytes_per_point * points, need.str(), communicator);
+  }
 } // namespace penny

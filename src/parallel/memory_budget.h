@@ -34,4 +34,9 @@ namespace penny
   // make: "Grid points per side = 16384: 2.7e+08 points need about".
   // Collective on `communicator`: its rank 0 decides.
   void check_memory_need(double bytes, const std::string &need, MPI_Comm communicator);
+
+  // The same for an N x N grid of `bytes_per_point` a point per rank (each
+  // scene's, measured), named by `entries`: "ENTRIES: N^2 grid points need about ...".
+  void check_grid_memory(unsigned int n_points, double bytes_per_point, const std::string &entries,
+                         MPI_Comm communicator);
 } // namespace penny

@@ -63,12 +63,9 @@ namespace penny
   void check_grid_memory(const RandomSurfaceParameters &surfaces, const double bytes_per_point,
                          const MPI_Comm communicator)
   {
-    const double       points = std::pow(double(surfaces.n_points), 2);
-    std::ostringstream need;
-    need.precision(2);
-    need << "Random surfaces/Grid points per side = " << surfaces.n_points << ": " << points
-         << " grid points need about";
-    check_memory_need(bytes_per_point * points, need.str(), communicator);
+    check_grid_memory(surfaces.n_points, bytes_per_point,
+                      "Random surfaces/Grid points per side = " + std::to_string(surfaces.n_points),
+                      communicator);
   }
 
   Estimate mean_over(const std::vector<std::vector<double>> &rows, const std::size_t column)

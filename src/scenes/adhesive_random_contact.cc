@@ -155,12 +155,12 @@ namespace penny
         unsigned int finest = 0;
         for (const Case &one : cases)
           finest = std::max(finest, one.surfaces.grid_points(zones.lengths.back()));
-        std::ostringstream need;
-        need << "Adhesive random contact/Cohesive zones l_pz/lambda1 = " << shortest(zones.lengths.back())
-             << " with Points per cohesive zone = " << shortest(zones.points_per_zone)
-             << " and Magnifications up to " << shortest(power_laws.magnifications.back()) << ": a grid of "
-             << finest << "^2 points needs about";
-        check_memory_need(180 * double(finest) * finest, need.str(), MPI_COMM_WORLD);
+        check_grid_memory(
+            finest, 180,
+            "Adhesive random contact/Cohesive zones l_pz/lambda1 = " + shortest(zones.lengths.back()) +
+                " with Points per cohesive zone = " + shortest(zones.points_per_zone) +
+                " and Magnifications up to " + shortest(power_laws.magnifications.back()),
+            MPI_COMM_WORLD);
 
         const std::size_t n_zones = zones.lengths.size(), n_loads = mean_pressures.size();
         Progress          progress(log, "realisations", 30);
