@@ -123,6 +123,8 @@ def read_arguments():
                         help="Markdown files whose generated blocks the report rewrites")
     arguments = parser.parse_intermixed_args()
     arguments.penny = (arguments.build / "penny").resolve()
+    # The runs and their figures work in folders of their own: relative paths would be taken from there.
+    arguments.out = arguments.out.resolve()
     if not os.access(arguments.penny, os.X_OK):
         parser.error(f"no penny program in {arguments.build}")
     if not 1 <= arguments.ranks <= 1024:

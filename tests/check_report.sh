@@ -2,7 +2,7 @@
 # Usage: check_report.sh BUILD_DIR REPORT_SCRIPT SCENES_DIR
 # The verification report at test size: two scenes pass and are reported,
 # a second call resumes from their records and rewrites a document's
-# generated blocks (--documents), a check broken on purpose (a
+# generated blocks (--documents), a relative report folder keeps its figures, a check broken on purpose (a
 # tolerance no discretisation meets) is reported as FAIL with exit status 1,
 # and a bad argument exits 2.
 set -u
@@ -45,6 +45,11 @@ for broken in $'<!-- report: claims -->\nnever closed' $'<!-- report: everything
   run "$work/good" --prms "$scenes" penny-gap --documents "$work/plain.md"
   [ $? = 2 ] || fail "--documents on '$broken' did not exit 2"
 done
+
+# A report folder given relative to the working folder: the runs and their figures find it from their own folders.
+(cd "$work" && /usr/bin/python3 "$report" "$build" relative --prms "$scenes" bem-westergaard > "$work/log" 2>&1) ||
+  fail "exit status $? with a relative report folder (a figure lost?)"
+[ -n "$(find "$work/relative/runs/bem-westergaard" -name "*.png")" ] || fail "no figure with a relative report folder"
 
 mkdir "$work/broken"
 sed 's/^\( *set Tolerance *=\).*/\1 1e-12/' "$scenes/gap-size-adhesionless.prm" > "$work/broken/gap-size-adhesionless.prm"

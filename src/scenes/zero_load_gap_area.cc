@@ -25,7 +25,7 @@ namespace penny
       void entries(Entries &entries) override
       {
         entries.number(
-            "Largest p0/sqrt(V)", largest_adhesion_ratio, 5, at_least(0),
+            "Largest p0/sqrt(V)", largest_adhesion_ratio, 5, interval("[]", 0, 1e30),
             "p0/sqrt(V) runs from 0 to this value in Area-load/Number of points steps. Units: none.");
       }
 
