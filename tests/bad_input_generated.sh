@@ -9,6 +9,7 @@
 #   include-beside  an include of a file beside the parameter file, read from
 #                 the working folder (deal.II's rule), where it is not
 #   byte-order-mark  a UTF-8 byte-order mark before the first statement
+#   nul-byte      a NUL byte inside a value, which cut the message there
 set -eu
 penny=$1 case=$2 expected=$3
 here=$(cd "$(dirname "$0")" && pwd)
@@ -32,6 +33,9 @@ case $case in
     ;;
   byte-order-mark)
     printf '\357\273\277set Scene = penny-gap\n' | cat - "$prm" > "$prm.new" && mv "$prm.new" "$prm"
+    ;;
+  nul-byte)
+    printf 'set Scene = penny\000gap\n' >> "$prm"
     ;;
   huge-value)
     /usr/bin/python3 -c "

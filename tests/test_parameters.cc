@@ -182,7 +182,7 @@ BOOST_AUTO_TEST_CASE(bad_entries)
   BOOST_TEST(mentions(error_of("subsection Mesh\n set Generator = gmsh\n set Mesh file = no-such.msh\nend\n"),
                       "Mesh/Mesh file"));
   BOOST_TEST(mentions(error_of("subsection Geometry\n set Gap radius c = 1\n"),
-                      "unequal numbers of 'subsection' and 'end'"));
+                      "line 1: subsection 'Geometry' has no 'end'"));
   BOOST_TEST(mentions(error_of("set Scene penny-gap\n"), "Invalid format of 'set'"));
   // One bound for every load: an expression beyond 1e30 Pa as for P itself.
   BOOST_TEST(mentions(error_of("subsection Load\n set Type = expression\n set Expression = 1e31\nend\n"),

@@ -48,6 +48,8 @@ namespace penny
         result.files.push_back(filename);
         std::string  line;
         unsigned int number = 0;
+        // Each file balances its own subsections, as deal.II's reader requires.
+        const std::size_t outer = path.size();
         while (std::getline(in, line))
           {
             const unsigned int first = ++number;
@@ -62,6 +64,9 @@ namespace penny
             // Lines of an included file name the file.
             const std::string where =
                 (open_files.size() > 1 ? in_quotes(filename) + ", " : "") + "line " + std::to_string(first);
+            // deal.II's reader and every message would end the text there.
+            if (line.find('\0') != std::string::npos)
+              throw InputError(where + ": a NUL byte; a .prm file is text");
             const std::size_t comment = line.find('#');
             // deal.II's reader has no escape: the value would end in the backslash.
             if (comment != std::string::npos && comment > 0 && line[comment - 1] == '\\')
@@ -73,9 +78,18 @@ namespace penny
             const auto [keyword, rest] = statement(line);
             result.sets_any            = result.sets_any || !keyword.empty();
             if (keyword == "subsection")
-              path.push_back(rest);
-            else if (keyword == "end" && !path.empty())
-              path.pop_back();
+              {
+                path.push_back(rest);
+                opened_at.push_back(where);
+              }
+            else if (keyword == "end" && path.size() == outer)
+              throw InputError(where + ": 'end' without a subsection to end" +
+                               (outer > 0 ? " in this file" : ""));
+            else if (keyword == "end")
+              {
+                path.pop_back();
+                opened_at.pop_back();
+              }
             else if (keyword == "include")
               include(rest, filename, where);
             else if (keyword == "set" && rest.find('=') != std::string::npos)
@@ -97,6 +111,9 @@ namespace penny
                   result.scene = dealii::Utilities::trim(rest.substr(rest.find('=') + 1));
               }
           }
+        if (path.size() > outer)
+          throw InputError(opened_at.back() + ": subsection " + in_quotes(path.back()) + " has no 'end'" +
+                           (open_files.size() > 1 ? " in its file" : ""));
         open_files.pop_back();
       }
 
@@ -120,6 +137,7 @@ namespace penny
 
       std::vector<std::string> open_files; // the chain of includes being read
       std::vector<std::string> path;       // subsections entered
+      std::vector<std::string> opened_at;  // where each was entered: "line N"
       std::map<std::string, std::pair<std::string, std::string>>
           set_at; // entry -> (file, "line N") setting it
     };
