@@ -104,7 +104,8 @@ BOOST_AUTO_TEST_CASE(spectrum_file)
   BOOST_TEST(spectrum.wavenumbers.size() == 2u);
   BOOST_TEST(spectrum.densities[1] == 2e-23);
   // A UTF-8 byte-order mark before the first row is no text.
-  std::ofstream(file) << "\xEF\xBB\xBF" << "1e3 2e-20\n1e4 2e-23\n";
+  std::ofstream(file) << "\xEF\xBB\xBF"
+                      << "1e3 2e-20\n1e4 2e-23\n";
   BOOST_TEST(read_power_spectrum(file.string()).wavenumbers.front() == 1e3);
 
   std::ofstream(file) << "1e3 2e-20\n1e2 2e-23\n";
@@ -249,6 +250,19 @@ BOOST_AUTO_TEST_CASE(toughness_and_amplitude_parameters)
   const auto &r = surface.roughness;
   BOOST_TEST(std::sqrt(spectral_moments(power_law_spectrum(r.hurst, r.q0, r.zeta, r.amplitude)).m0) == 2e-6,
              tt::tolerance(1e-13));
+}
+
+// zero-load-gap-area reads no curve lists: in the consistent convention it
+// ran only once the unused Area-load/Magnifications were set above 1.
+BOOST_AUTO_TEST_CASE(zero_load_gap_area_in_the_consistent_convention)
+{
+  const ScratchFolder scratch;
+  const Verdict       verdict = run_scene_text("set Scene = zero-load-gap-area\n"
+                                                     "subsection Area-load\n set Convention = consistent\nend\n"
+                                                     "subsection Zero-load gap area\n set Number of points = 3\nend\n",
+                                               scratch.path);
+  BOOST_TEST(verdict.passed, verdict.message);
+  BOOST_TEST(std::filesystem::is_regular_file(scratch.path / "results" / "zero-load-gap-area.csv"));
 }
 
 // The scene at test size: the FE g at 8 tensions, A_nc within 1e-4 of the

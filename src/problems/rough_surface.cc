@@ -75,38 +75,55 @@ namespace penny
       }
   }
 
-  void area_load_section(Sections &sections, AreaLoadParameters &area_load)
+  void mean_pressure_entries(Sections &sections, Sweep &mean_pressures)
+  {
+    sections.subsection("Area-load", [&](Entries &entries) {
+      // Near full contact the gaps are isolated for p_bar of a few sqrt(V);
+      // far beyond, the laws underflow to 0 or overflow.
+      entries.sweep("mean pressure", "Number of points", mean_pressures, {0, 3, 61}, 2, 100000,
+                    interval("[]", -100, 100, "sqrt(V)"),
+                    "The range of p_bar/sqrt(V) of the curves (compression positive). Units: sqrt(V).");
+    });
+  }
+
+  void hurst_exponents_entry(Sections &sections, std::vector<double> &hurst_exponents)
+  {
+    sections.subsection("Area-load", [&](Entries &entries) {
+      entries.numbers("Hurst exponents", hurst_exponents, {0.75, 0.5, 0.25},
+                      interval("[)", smallest_hurst_exponent, 1),
+                      "area-load: one panel per H; magnification-scaling: one fit per H. Units: none.");
+    });
+  }
+
+  void magnifications_entry(Sections &sections, std::vector<double> &magnifications,
+                            const bool &convention_is_paper)
+  {
+    sections.subsection("Area-load", [&](Entries &entries) {
+      // Beyond 1e30 the spectral moments leave the range of a double.
+      entries.numbers("Magnifications", magnifications, {1, 10, 100, 1000, 10000}, interval("[]", 1, 1e30),
+                      "One curve per zeta (above 1 in the consistent convention). Units: none.");
+      if (!convention_is_paper)
+        for (const double zeta : magnifications)
+          entries.require(zeta > 1, "Magnifications", zeta, "(1, 1e30] in the consistent convention");
+    });
+  }
+
+  void convention_entry(Sections &sections, RoughSurfaceProblem &problem)
   {
     sections.subsection("Area-load", [&](Entries &entries) {
       entries.choice(
-          "Convention", area_load.convention_is_paper, true,
+          "Convention", problem.convention_is_paper, true,
           EnumNames<bool>{{"paper", true}, {"consistent", false}},
           "paper: the paper's normalisations, prefactor 3 pi R_p eta sqrt(V) = sqrt(2 pi) and p0/sqrt(V) = "
           "zeta^theta, theta = (2/5)(2H - 1). consistent: V, eta, R_p and p0 from the moments of the "
-          "Roughness spectrum (each H and zeta below replacing its own), the Material and the Adhesion "
-          "sections.");
-      // Near full contact the gaps are isolated for p_bar of a few sqrt(V);
-      // far beyond, the laws underflow to 0 or overflow.
-      entries.sweep("mean pressure", "Number of points", area_load.mean_pressures, {0, 3, 61}, 2, 100000,
-                    interval("[]", -100, 100, "sqrt(V)"),
-                    "The range of p_bar/sqrt(V) of the curves (compression positive); zero-load-gap-area "
-                    "takes its number of points. Units: sqrt(V).");
-      entries.numbers("Hurst exponents", area_load.hurst_exponents, {0.75, 0.5, 0.25},
-                      interval("[)", smallest_hurst_exponent, 1),
-                      "area-load: one panel per H; magnification-scaling: one fit per H. Units: none.");
-      // Beyond 1e30 the spectral moments leave the range of a double.
-      entries.numbers("Magnifications", area_load.magnifications, {1, 10, 100, 1000, 10000},
-                      interval("[]", 1, 1e30),
-                      "area-load: one curve per zeta (above 1 in the consistent convention). Units: none.");
-      if (!area_load.convention_is_paper)
-        for (const double zeta : area_load.magnifications)
-          entries.require(zeta > 1, "Magnifications", zeta, "(1, 1e30] in the consistent convention");
+          "Roughness spectrum (with the curve's H and zeta, where the scene has its own), the Material "
+          "and the Adhesion sections.");
     });
   }
 
   GapPopulation RoughSurfaceProblem::population(const double hurst, const double zeta) const
   {
-    if (area_load.convention_is_paper)
+    if (convention_is_paper)
       return paper_population(hurst, zeta);
     const auto moments = spectral_moments(power_law_spectrum(hurst, roughness.q0, zeta, roughness.amplitude));
     return surface_population(
@@ -116,7 +133,7 @@ namespace penny
 
   std::string RoughSurfaceProblem::convention_line() const
   {
-    return area_load.convention_is_paper
+    return convention_is_paper
                ? "convention: paper (3 pi R_p eta sqrt(V) = sqrt(2 pi), p0/sqrt(V) = zeta^theta)"
                : "convention: consistent (V, eta, R_p and p0 from the moments of the Roughness power law)";
   }
@@ -126,6 +143,5 @@ namespace penny
     material_section(sections, problem.material);
     adhesion_section(sections, problem.critical_stress_intensity, problem.material);
     roughness_section(sections, problem.roughness);
-    area_load_section(sections, problem.area_load);
   }
 } // namespace penny

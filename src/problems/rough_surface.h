@@ -23,16 +23,15 @@ namespace penny
   // Roughness/Spectrum file for a file that is not a valid table.
   PowerSpectrum power_spectrum(const RoughnessParameters &roughness);
 
-  // Area-load curves aggregated over the Gaussian field of pressure summits.
-  struct AreaLoadParameters
-  {
-    bool                convention_is_paper;
-    Sweep               mean_pressures; // p_bar/sqrt(V)
-    std::vector<double> hurst_exponents, magnifications;
-  };
-
-  // Area-load.
-  void area_load_section(Sections &sections, AreaLoadParameters &area_load);
+  // The entries of Area-load, the curves aggregated over the Gaussian field
+  // of pressure summits; each scene reads those it uses.
+  // The mean pressures of the curves, p_bar/sqrt(V).
+  void mean_pressure_entries(Sections &sections, Sweep &mean_pressures);
+  // The power laws of the curves: their Hurst exponents.
+  void hurst_exponents_entry(Sections &sections, std::vector<double> &hurst_exponents);
+  // ... and their magnifications, above 1 in the consistent convention.
+  void magnifications_entry(Sections &sections, std::vector<double> &magnifications,
+                            const bool &convention_is_paper);
 
   // What the statistical scenes read: the surface, its solid, the adhesion
   // and the curves.
@@ -41,7 +40,7 @@ namespace penny
     RoughnessParameters roughness;
     MaterialParameters  material;
     double              critical_stress_intensity; // K_Ic (Pa m^1/2)
-    AreaLoadParameters  area_load;
+    bool                convention_is_paper = true;
 
     // The gaps of the power-law surface (H, zeta): the paper's normalised
     // population, or the consistent one from the moments of the Roughness
@@ -52,6 +51,9 @@ namespace penny
     std::string convention_line() const;
   };
 
-  // Material, Adhesion, Roughness and Area-load.
+  // Material, Adhesion and Roughness.
   void rough_surface_sections(Sections &sections, RoughSurfaceProblem &problem);
+
+  // Area-load/Convention, for the scenes whose curves use one (population()).
+  void convention_entry(Sections &sections, RoughSurfaceProblem &problem);
 } // namespace penny

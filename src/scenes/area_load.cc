@@ -22,27 +22,33 @@ namespace penny
   {
     struct AreaLoadScene : Scene
     {
-      void inputs(Sections &sections) override { rough_surface_sections(sections, surface); }
+      void inputs(Sections &sections) override
+      {
+        rough_surface_sections(sections, surface);
+        convention_entry(sections, surface);
+        mean_pressure_entries(sections, mean_pressures);
+        hurst_exponents_entry(sections, hurst_exponents);
+        magnifications_entry(sections, magnifications, surface.convention_is_paper);
+      }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        const auto &range = surface.area_load;
-        double      worst = 0;
-        Table       table({"H", "zeta", "p0/sqrtV", "p_bar/sqrtV", "A_nc linear closed form",
-                           "A_nc linear integral", "A_nc exact g", "A_nc adhesionless", "A_c Persson-type",
-                           "A_c Persson-type adhesionless", "A_nc linear > 1", "A_nc exact g > 1"});
-        Table       summary({"H", "zeta", "p0/sqrt(V)", "prefactor", "A_nc(p_bar = 0), linear law",
-                             "A_nc(p_bar = 0), exact g"});
-        for (const double hurst : range.hurst_exponents)
-          for (const double zeta : range.magnifications)
+        double worst = 0;
+        Table  table({"H", "zeta", "p0/sqrtV", "p_bar/sqrtV", "A_nc linear closed form",
+                      "A_nc linear integral", "A_nc exact g", "A_nc adhesionless", "A_c Persson-type",
+                      "A_c Persson-type adhesionless", "A_nc linear > 1", "A_nc exact g > 1"});
+        Table  summary({"H", "zeta", "p0/sqrt(V)", "prefactor", "A_nc(p_bar = 0), linear law",
+                        "A_nc(p_bar = 0), exact g"});
+        for (const double hurst : hurst_exponents)
+          for (const double zeta : magnifications)
             try
               {
                 const GapPopulation gaps = surface.population(hurst, zeta);
                 const GapPopulation adhesionless{gaps.prefactor, 0};
                 const auto          exact = exact_gap_law(gaps.adhesion);
-                for (unsigned int i = 0; i < range.mean_pressures.n_points; ++i)
+                for (unsigned int i = 0; i < mean_pressures.n_points; ++i)
                   {
-                    const double p_bar    = range.mean_pressures.at(i);
+                    const double p_bar    = mean_pressures.at(i);
                     const double closed   = linear_law_noncontact_area(gaps, p_bar);
                     const double integral = noncontact_area(gaps, linear_gap_law(gaps.adhesion), p_bar);
                     worst                 = worse(worst, relative_error(integral, closed));
@@ -65,8 +71,8 @@ namespace penny
                                  "smaller zeta)");
               }
         results.write_csv("area-load.csv", table);
-        log << "Area-load curves, A_nc/A_0 against p_bar/sqrt(V) from " << range.mean_pressures.smallest
-            << " to " << range.mean_pressures.largest << " (paper Figs. 4 and 5)\n"
+        log << "Area-load curves, A_nc/A_0 against p_bar/sqrt(V) from " << mean_pressures.smallest << " to "
+            << mean_pressures.largest << " (paper Figs. 4 and 5)\n"
             << surface.convention_line() << '\n';
         summary.print(log);
         std::ostringstream error;
@@ -77,6 +83,8 @@ namespace penny
       }
 
       RoughSurfaceProblem surface;
+      Sweep               mean_pressures; // p_bar/sqrt(V)
+      std::vector<double> hurst_exponents, magnifications;
     };
   } // namespace
 

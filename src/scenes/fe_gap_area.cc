@@ -26,7 +26,7 @@ namespace penny
       void inputs(Sections &sections) override
       {
         input.sections(sections);
-        area_load_section(sections, area_load);
+        mean_pressure_entries(sections, mean_pressures);
       }
 
       void entries(Entries &entries) override
@@ -44,7 +44,6 @@ namespace penny
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
         PennyGapSearch search(input.gap, log);
-        const auto    &range    = area_load;
         const double   adhesion = adhesion_ratio;
         const double   R_p      = input.summit.summit_radius;
         const double   K_Ic     = input.summit.critical_stress_intensity;
@@ -55,11 +54,11 @@ namespace penny
         const GapPopulation exact_gaps{std::sqrt(2 * M_PI), adhesion};
         const GapPopulation fe_gaps{exact_gaps.prefactor, minimum.tension / sqrt_V};
         const unsigned int  n_tensions = n_tabulated_tensions;
-        const double t_max   = std::max(integration_limit(fe_gaps.adhesion, range.mean_pressures.smallest),
-                                        integration_limit(exact_gaps.adhesion, range.mean_pressures.smallest));
-        const auto   fe_P    = chebyshev_tensions(fe_gaps.adhesion, t_max, n_tensions);
-        const auto   exact_P = chebyshev_tensions(exact_gaps.adhesion, t_max, n_tensions);
-        const auto   exact   = exact_gap_law(exact_gaps.adhesion);
+        const double        t_max   = std::max(integration_limit(fe_gaps.adhesion, mean_pressures.smallest),
+                                               integration_limit(exact_gaps.adhesion, mean_pressures.smallest));
+        const auto          fe_P    = chebyshev_tensions(fe_gaps.adhesion, t_max, n_tensions);
+        const auto          exact_P = chebyshev_tensions(exact_gaps.adhesion, t_max, n_tensions);
+        const auto          exact   = exact_gap_law(exact_gaps.adhesion);
         std::vector<double> fe_areas, exact_areas;
         Table               gap_table({"P/sqrtV", "c_t FE (m)", "c_t closed form (m)", "relative error"});
         // P = p0 + t^2 sqrt(V): exactly the FE p0 at t = 0, whose gap is the minimum's.
@@ -86,9 +85,9 @@ namespace penny
         double worst = 0, worst_table = 0;
         Table  table({"p_bar/sqrtV", "A_nc FE g", "A_nc closed-form g", "A_nc closed-form g tabulated",
                       "relative difference"});
-        for (unsigned int i = 0; i < range.mean_pressures.n_points; ++i)
+        for (unsigned int i = 0; i < mean_pressures.n_points; ++i)
           {
-            const double p_bar     = range.mean_pressures.at(i);
+            const double p_bar     = mean_pressures.at(i);
             const double fe        = noncontact_area(fe_gaps, fe_law, p_bar);
             const double reference = noncontact_area(exact_gaps, exact, p_bar);
             const double tabulated = noncontact_area(exact_gaps, exact_table, p_bar);
@@ -116,10 +115,10 @@ namespace penny
         return verdict(worst);
       }
 
-      AdhesiveGapInput   input;
-      AreaLoadParameters area_load;
-      double             adhesion_ratio;
-      unsigned int       n_tabulated_tensions;
+      AdhesiveGapInput input;
+      Sweep            mean_pressures; // p_bar/sqrt(V)
+      double           adhesion_ratio;
+      unsigned int     n_tabulated_tensions;
     };
   } // namespace
 

@@ -21,7 +21,7 @@ namespace penny
   {
     struct MagnificationScalingScene : Scene
     {
-      void inputs(Sections &sections) override { area_load_section(sections, area_load); }
+      void inputs(Sections &sections) override { hurst_exponents_entry(sections, hurst_exponents); }
 
       void entries(Entries &entries) override
       {
@@ -46,7 +46,7 @@ namespace penny
                       "theta fit paper",
                       "theta fit consistent",
                       {"largest |fit - theta|", Table::Format{2, true}}});
-        for (const double hurst : area_load.hurst_exponents)
+        for (const double hurst : hurst_exponents)
           {
             const double theta = scaling_exponent(hurst);
             double       fits[2];
@@ -65,8 +65,7 @@ namespace penny
         return {};
       }
 
-      AreaLoadParameters  area_load;
-      std::vector<double> fit;
+      std::vector<double> hurst_exponents, fit;
     };
   } // namespace
 

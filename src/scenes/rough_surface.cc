@@ -59,7 +59,11 @@ namespace penny
 
     struct RoughSurfaceScene : Scene
     {
-      void inputs(Sections &sections) override { rough_surface_sections(sections, surface); }
+      void inputs(Sections &sections) override
+      {
+        rough_surface_sections(sections, surface);
+        mean_pressure_entries(sections, mean_pressures);
+      }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
@@ -71,12 +75,11 @@ namespace penny
         const GapPopulation   gaps[2]    = {surface_population(summits[0], K_Ic, Convention::paper),
                                             surface_population(summits[1], K_Ic, Convention::consistent)};
 
-        const auto &range = surface.area_load;
-        Table       curve({"p_bar/sqrtV", "A_nc paper", "A_nc consistent", "A_nc paper exact g",
-                           "A_nc consistent exact g"});
-        for (unsigned int i = 0; i < range.mean_pressures.n_points; ++i)
+        Table curve({"p_bar/sqrtV", "A_nc paper", "A_nc consistent", "A_nc paper exact g",
+                     "A_nc consistent exact g"});
+        for (unsigned int i = 0; i < mean_pressures.n_points; ++i)
           {
-            const double p_bar = range.mean_pressures.at(i);
+            const double p_bar = mean_pressures.at(i);
             curve.add_row({p_bar, linear_law_noncontact_area(gaps[0], p_bar),
                            linear_law_noncontact_area(gaps[1], p_bar),
                            noncontact_area(gaps[0], exact_gap_law(gaps[0].adhesion), p_bar),
@@ -90,9 +93,9 @@ namespace penny
         publish(conventions_table(summits, gaps), "rough-surface-conventions.csv", results, log);
         log << "(the paper convention replaces its 3 pi R_p eta sqrt(V) by sqrt(2 pi) = "
             << std::sqrt(2 * M_PI) << ")\n"
-            << "A_nc/A_0 at p_bar = " << range.mean_pressures.smallest << " sqrt(V), linear law: paper "
-            << linear_law_noncontact_area(gaps[0], range.mean_pressures.smallest) << ", consistent "
-            << linear_law_noncontact_area(gaps[1], range.mean_pressures.smallest) << '\n'
+            << "A_nc/A_0 at p_bar = " << mean_pressures.smallest << " sqrt(V), linear law: paper "
+            << linear_law_noncontact_area(gaps[0], mean_pressures.smallest) << ", consistent "
+            << linear_law_noncontact_area(gaps[1], mean_pressures.smallest) << '\n'
             << "Tables: " << results.directory().string()
             << "/rough-surface.csv (both conventions), rough-surface-moments.csv, "
                "rough-surface-conventions.csv\n";
@@ -100,6 +103,7 @@ namespace penny
       }
 
       RoughSurfaceProblem surface;
+      Sweep               mean_pressures; // p_bar/sqrt(V)
     };
   } // namespace
 

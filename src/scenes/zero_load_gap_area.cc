@@ -20,24 +20,28 @@ namespace penny
   {
     struct ZeroLoadGapAreaScene : Scene
     {
-      void inputs(Sections &sections) override { rough_surface_sections(sections, surface); }
+      void inputs(Sections &sections) override
+      {
+        rough_surface_sections(sections, surface);
+        convention_entry(sections, surface);
+      }
 
       void entries(Entries &entries) override
       {
-        entries.number(
-            "Largest p0/sqrt(V)", largest_adhesion_ratio, 5, interval("[]", 0, 1e30),
-            "p0/sqrt(V) runs from 0 to this value in Area-load/Number of points steps. Units: none.");
+        entries.number("Largest p0/sqrt(V)", largest_adhesion_ratio, 5, interval("[]", 0, 1e30),
+                       "p0/sqrt(V) runs from 0 to this value. Units: none.");
+        entries.integer("Number of points", n_points, 61u, 2u, 100000u,
+                        "Values of p0/sqrt(V), evenly spaced. Units: none.");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        const auto  &range   = surface.area_load;
         const double largest = largest_adhesion_ratio;
         const auto   gaps_of = surface.population(surface.roughness.hurst, surface.roughness.zeta);
         double       worst   = 0;
         Table        table({"p0/sqrtV", "A_nc linear closed form", "A_nc linear integral", "A_nc exact g",
                             "A_c Persson-type"});
-        const Sweep  adhesions{0, largest, range.mean_pressures.n_points}; // p0/sqrt(V)
+        const Sweep  adhesions{0, largest, n_points}; // p0/sqrt(V)
         for (unsigned int i = 0; i < adhesions.n_points; ++i)
           {
             const GapPopulation gaps{gaps_of.prefactor, adhesions.at(i)};
@@ -67,6 +71,7 @@ namespace penny
 
       RoughSurfaceProblem surface;
       double              largest_adhesion_ratio;
+      unsigned int        n_points;
     };
   } // namespace
 
