@@ -14,16 +14,23 @@ namespace penny
 {
   namespace
   {
+    // The first word of a line, as written.
+    std::string first_word(const std::string &line)
+    {
+      const std::size_t start = line.find_first_not_of(" \t\r");
+      return start == std::string::npos ? "" : line.substr(start, line.find_first_of(" \t\r", start) - start);
+    }
+
     // One statement of a .prm file: its keyword (set, subsection, end,
     // include, in any case) and the rest of the line.
     std::pair<std::string, std::string> statement(const std::string &line)
     {
       const std::string trimmed = dealii::Utilities::trim(line);
-      const std::size_t blank   = trimmed.find_first_of(" \t");
-      std::string       keyword = trimmed.substr(0, blank);
+      std::string       keyword = first_word(trimmed);
+      const std::string rest    = dealii::Utilities::trim(trimmed.substr(keyword.size()));
       std::transform(keyword.begin(), keyword.end(), keyword.begin(),
                      [](const unsigned char ch) { return std::tolower(ch); });
-      return {keyword, blank == std::string::npos ? "" : dealii::Utilities::trim(trimmed.substr(blank))};
+      return {keyword, rest};
     }
 
     class StatementScan
@@ -77,6 +84,12 @@ namespace penny
               line.erase(comment);
             const auto [keyword, rest] = statement(line);
             result.sets_any            = result.sets_any || !keyword.empty();
+            if (!keyword.empty() && keyword != "set" && keyword != "subsection" && keyword != "end" &&
+                keyword != "include")
+              throw InputError(where + ": " + in_quotes(first_word(line)) +
+                               " starts no statement (a line is set, subsection, end, include or a comment)");
+            if (keyword == "subsection" && rest.empty())
+              throw InputError(where + ": 'subsection' without a name");
             if (keyword == "subsection")
               {
                 path.push_back(rest);
