@@ -273,6 +273,9 @@ namespace penny
   {
     sections.subsection("Load", [&](Entries &entries) {
       peak_tension_entry(entries, load.peak_tension);
+      // The scenes of the parabola alone scale their errors by P.
+      entries.require(!entries.reading() || load.peak_tension > 0, "Peak tension P", load.peak_tension,
+                      "(0, 1e30] Pa: the parabola's peak is a tension");
       parabola_entries(entries, load);
     });
     load.type = LoadParameters::Type::parabolic;
