@@ -160,6 +160,22 @@ BOOST_AUTO_TEST_CASE(theta_fit)
   BOOST_TEST(scaling_exponent(0.75) == 0.2, tt::tolerance(1e-15));
 }
 
+// The consistent prefactor 3 pi R_p eta sqrt(V) of a power law is that of its
+// shape alone: the same for any q0, h0, E* and K_Ic.
+BOOST_AUTO_TEST_CASE(power_law_prefactor_free_of_scales)
+{
+  for (const double hurst : {0.3, 0.75})
+    {
+      const auto moments = spectral_moments(power_law_spectrum(hurst, 1e3, 300, 2e-5));
+      const auto scaled  = surface_population(pressure_summits(moments, 3e9, Convention::consistent), 1e6,
+                                              Convention::consistent);
+      BOOST_TEST(power_law_prefactor(hurst, 300, Convention::consistent) == scaled.prefactor,
+                 tt::tolerance(1e-12));
+      BOOST_TEST(power_law_prefactor(hurst, 300, Convention::paper) == std::sqrt(2 * M_PI),
+                 tt::tolerance(1e-15));
+    }
+}
+
 BOOST_AUTO_TEST_CASE(linear_law_closed_form_against_quadrature)
 {
   for (const double adhesion : {0., 0.3, 1., 2.5, 5.})

@@ -8,6 +8,23 @@
 
 namespace penny
 {
+  namespace
+  {
+    void power_law_shape_entries(Entries &entries, RoughnessParameters &roughness, const std::string &use)
+    {
+      entries.number("Hurst exponent H", roughness.hurst, 0.75, interval("[)", smallest_hurst_exponent, 1),
+                     use + "Units: none.");
+      entries.number("Magnification zeta", roughness.zeta, 1000, above(1),
+                     use + "q1/q0, the bandwidth of the power law. Units: none.");
+    }
+  } // namespace
+
+  void power_law_shape_section(Sections &sections, RoughnessParameters &roughness, const std::string &use)
+  {
+    sections.subsection("Roughness",
+                        [&](Entries &entries) { power_law_shape_entries(entries, roughness, use); });
+  }
+
   void roughness_section(Sections &sections, RoughnessParameters &roughness, const bool one_spectrum)
   {
     using Spectrum = RoughnessParameters::Spectrum;
@@ -28,12 +45,9 @@ namespace penny
           EnumNames<Spectrum>{{"power-law", Spectrum::power_law}, {"file", Spectrum::file}},
           "Isotropic height PSD C(q): the paper's power law (H/2pi) (h0/q0)^2 (q/q0)^(-2(H+1)) on q0 <= q "
           "<= zeta q0, or the table in 'Spectrum file'.");
-      entries.number("Hurst exponent H", roughness.hurst, 0.75, interval("[)", smallest_hurst_exponent, 1),
-                     "Units: none.");
+      power_law_shape_entries(entries, roughness, "");
       entries.number("Long-wavelength cut-off q0", roughness.q0, 6283.185307179586, above(0),
                      "Smallest wavenumber of the power law, q0 = 2 pi/lambda0. Units: 1/m.");
-      entries.number("Magnification zeta", roughness.zeta, 1000, above(1),
-                     "q1/q0, the bandwidth of the power law. Units: none.");
       bool from_ratio = true;
       entries.choice("Amplitude given by", from_ratio, true,
                      EnumNames<bool>{{"h0/lambda0", true}, {"rms height", false}},
@@ -108,16 +122,15 @@ namespace penny
     });
   }
 
-  void convention_entry(Sections &sections, RoughSurfaceProblem &problem)
+  void convention_entry(Sections &sections, bool &convention_is_paper)
   {
     sections.subsection("Area-load", [&](Entries &entries) {
       entries.choice(
-          "Convention", problem.convention_is_paper, true,
-          EnumNames<bool>{{"paper", true}, {"consistent", false}},
+          "Convention", convention_is_paper, true, EnumNames<bool>{{"paper", true}, {"consistent", false}},
           "paper: the paper's normalisations, prefactor 3 pi R_p eta sqrt(V) = sqrt(2 pi) and p0/sqrt(V) = "
           "zeta^theta, theta = (2/5)(2H - 1). consistent: V, eta, R_p and p0 from the moments of the "
-          "Roughness spectrum (with the curve's H and zeta, where the scene has its own), the Material "
-          "and the Adhesion sections.");
+          "Roughness spectrum (with the curve's H and zeta, where the scene has its own), and where the "
+          "scene has them, the Material and the Adhesion sections.");
     });
   }
 
@@ -138,10 +151,10 @@ namespace penny
                : "convention: consistent (V, eta, R_p and p0 from the moments of the Roughness power law)";
   }
 
-  void rough_surface_sections(Sections &sections, RoughSurfaceProblem &problem)
+  void rough_surface_sections(Sections &sections, RoughSurfaceProblem &problem, const bool one_spectrum)
   {
     material_section(sections, problem.material);
     adhesion_section(sections, problem.critical_stress_intensity, problem.material);
-    roughness_section(sections, problem.roughness);
+    roughness_section(sections, problem.roughness, one_spectrum);
   }
 } // namespace penny

@@ -19,6 +19,10 @@ namespace penny
   // h0/lambda0 of them.
   void roughness_section(Sections &sections, RoughnessParameters &roughness, bool one_spectrum = true);
 
+  // Roughness/Hurst exponent H and Magnification zeta alone: the shape of a
+  // power law, for a scene that needs no scale; `use` starts their text.
+  void power_law_shape_section(Sections &sections, RoughnessParameters &roughness, const std::string &use);
+
   // The spectrum a Roughness subsection describes; throws InputError naming
   // Roughness/Spectrum file for a file that is not a valid table.
   PowerSpectrum power_spectrum(const RoughnessParameters &roughness);
@@ -51,9 +55,9 @@ namespace penny
     std::string convention_line() const;
   };
 
-  // Material, Adhesion and Roughness.
-  void rough_surface_sections(Sections &sections, RoughSurfaceProblem &problem);
+  // Material, Adhesion and Roughness (`one_spectrum` as for roughness_section).
+  void rough_surface_sections(Sections &sections, RoughSurfaceProblem &problem, bool one_spectrum = true);
 
-  // Area-load/Convention, for the scenes whose curves use one (population()).
-  void convention_entry(Sections &sections, RoughSurfaceProblem &problem);
+  // Area-load/Convention, for the scenes whose curves use one.
+  void convention_entry(Sections &sections, bool &convention_is_paper);
 } // namespace penny

@@ -24,8 +24,9 @@ namespace penny
     {
       void inputs(Sections &sections) override
       {
-        rough_surface_sections(sections, surface);
-        convention_entry(sections, surface);
+        // Each curve has its own H and zeta: of Roughness only q0 and h0/lambda0.
+        rough_surface_sections(sections, surface, false);
+        convention_entry(sections, surface.convention_is_paper);
         mean_pressure_entries(sections, mean_pressures);
         hurst_exponents_entry(sections, hurst_exponents);
         magnifications_entry(sections, magnifications, surface.convention_is_paper);

@@ -22,8 +22,10 @@ namespace penny
     {
       void inputs(Sections &sections) override
       {
-        rough_surface_sections(sections, surface);
-        convention_entry(sections, surface);
+        convention_entry(sections, convention_is_paper);
+        power_law_shape_section(sections, roughness,
+                                "Convention = consistent: the power law whose moments give the prefactor "
+                                "3 pi R_p eta sqrt(V). ");
       }
 
       void entries(Entries &entries) override
@@ -36,15 +38,18 @@ namespace penny
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
+        // No scale enters the prefactor (so no Material or Adhesion either).
+        const double prefactor =
+            power_law_prefactor(roughness.hurst, roughness.zeta,
+                                convention_is_paper ? Convention::paper : Convention::consistent);
         const double largest = largest_adhesion_ratio;
-        const auto   gaps_of = surface.population(surface.roughness.hurst, surface.roughness.zeta);
         double       worst   = 0;
         Table        table({"p0/sqrtV", "A_nc linear closed form", "A_nc linear integral", "A_nc exact g",
                             "A_c Persson-type"});
         const Sweep  adhesions{0, largest, n_points}; // p0/sqrt(V)
         for (unsigned int i = 0; i < adhesions.n_points; ++i)
           {
-            const GapPopulation gaps{gaps_of.prefactor, adhesions.at(i)};
+            const GapPopulation gaps{prefactor, adhesions.at(i)};
             const double        closed   = linear_law_noncontact_area(gaps, 0);
             const double        integral = noncontact_area(gaps, linear_gap_law(gaps.adhesion), 0);
             worst                        = worse(worst, relative_error(integral, closed));
@@ -54,22 +59,26 @@ namespace penny
           }
         results.write_csv("zero-load-gap-area.csv", table);
 
-        const GapPopulation last{gaps_of.prefactor, largest};
+        const GapPopulation last{prefactor, largest};
         Table               summary = Table::summary();
-        summary.add_row({"prefactor 3 pi R_p eta sqrt(V)", gaps_of.prefactor});
+        summary.add_row({"prefactor 3 pi R_p eta sqrt(V)", prefactor});
         summary.add_row({"largest p0/sqrt(V)", last.adhesion});
         summary.add_row({"... A_nc/A_0, linear law", linear_law_noncontact_area(last, 0)});
         summary.add_row({"... A_nc/A_0, exact g", noncontact_area(last, exact_gap_law(last.adhesion), 0)});
         summary.add_row(
             {"largest |integral/closed form - 1|, linear law", Table::Cell(worst, Table::Format{2, true})});
         log << "Non-contact area at zero mean pressure against p0/sqrt(V) (paper Fig. 3)\n"
-            << surface.convention_line() << '\n';
+            << (convention_is_paper ? "convention: paper (3 pi R_p eta sqrt(V) = sqrt(2 pi))"
+                                    : "convention: consistent (3 pi R_p eta sqrt(V) from the moments of the "
+                                      "Roughness power law)")
+            << '\n';
         summary.print(log);
         log << "Table: " << results.directory().string() << "/zero-load-gap-area.csv\n";
         return {};
       }
 
-      RoughSurfaceProblem surface;
+      bool                convention_is_paper;
+      RoughnessParameters roughness;
       double              largest_adhesion_ratio;
       unsigned int        n_points;
     };

@@ -38,6 +38,12 @@ namespace penny
     return {prefactor, adhesion_ratio(summits, K_Ic)};
   }
 
+  double power_law_prefactor(const double hurst, const double zeta, const Convention convention)
+  {
+    const auto moments = spectral_moments(power_law_spectrum(hurst, 1, zeta, 1));
+    return surface_population(pressure_summits(moments, 1, convention), 1, convention).prefactor;
+  }
+
   // In units with sqrt(V) = 1 and R_p = 1, p0 = psi K_Ic^(4/5) fixes K_Ic.
   GapAreaLaw exact_gap_law(const double adhesion)
   {

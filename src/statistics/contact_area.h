@@ -30,6 +30,11 @@ namespace penny
   // prefactor sqrt(2 pi) in the paper convention, 3 pi R_p eta sqrt(V) in the consistent one.
   GapPopulation surface_population(const PressureSummits &summits, double K_Ic, Convention convention);
 
+  // The prefactor of the power law (H, zeta) in `convention`: 3 pi R_p eta
+  // sqrt(V) is a ratio of its moments, sqrt(m2 m6)/m4 up to a number, which
+  // no scale (q0, h0, E*, K_Ic) enters.
+  double power_law_prefactor(double hurst, double zeta, Convention convention);
+
   // Gap area pi c_t^2/(3 pi R_p sqrt(V)) against the summit's peak tension
   // P/sqrt(V) >= p0/sqrt(V); gaps below p0 are closed and never asked for.
   using GapAreaLaw = std::function<double(double P)>;
