@@ -148,7 +148,8 @@ namespace penny
       entries.increasing_numbers(
           "Ring radii", model.ring_radii, {0.1, 0.2, 0.4}, 1, interval("()", 0, 1),
           "Radii rho of the J-integral tubes around the front, q = (1 - (d/rho)^2)^4 across "
-          "it; below the smallest radius of curvature b^2/a of the front. Units: b^2/a.");
+          "it; below the smallest radius of curvature b^2/a of the front; elliptical-summits uses the "
+          "last. Units: b^2/a.");
     });
   }
 

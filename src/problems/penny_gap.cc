@@ -31,7 +31,8 @@ namespace penny
     {
       sections.subsection("Geometry", [&](Entries &entries) {
         entries.number("Gap radius c", geometry.gap_radius, 1, magnitude("m"),
-                       "Radius of the penny-shaped gap (crack). Units: m.");
+                       "Radius of the penny-shaped gap (crack); a scene that searches over c scales the "
+                       "model to each c it tries, so there it fixes only R/c and H/c. Units: m.");
         entries.number(
             "Domain radius R", geometry.domain_radius, 1000, {"(c, 1e12 c]", [](double) { return true; }},
             "Radius of the truncated cylinder. Its effect on K_I shrinks roughly like (c/R)^3 with a free "
@@ -71,13 +72,13 @@ namespace penny
             "builtin: quadtree of square cells, the tip at a vertex, graded geometrically (ratio 2) "
             "towards the tip and growing to R and H. gmsh: read 'Mesh file'.");
         entries.integer("Tip refinement levels", mesh.tip_levels, 30u, 0u, 40u,
-                        "Cells at the tip are c / 2^levels wide. Units: none.");
+                        "builtin only: cells at the tip are c / 2^levels wide. Units: none.");
         entries.integer("Gap face levels", mesh.gap_face_levels, 3u, 0u, 10u,
                         "builtin only: cells over the gap face, within c of it, are at most c/2^levels "
                         "wide; they resolve the face opening w(r). Units: none.");
         entries.number("Grading distance", mesh.grading_distance, 2, interval("[]", 0.5, 100),
-                       "A cell is refined while it lies closer to the tip than this many of its own "
-                       "widths; larger values give more cells per ring. Units: cell widths.");
+                       "builtin only: a cell is refined while it lies closer to the tip than this many of "
+                       "its own widths; larger values give more cells per ring. Units: cell widths.");
         entries.number("Cell aspect ratio", mesh.cell_aspect_ratio, 1, interval("[]", 1, 1000),
                        "builtin only: cells above z = min(c, H/2) are stretched along z to this many times "
                        "their width; the tip zone keeps square cells. A stress test of the mesh and the J "
@@ -154,13 +155,14 @@ namespace penny
       bool by_summit_radius = false;
       entries.choice("Parabola given by", by_summit_radius, false,
                      EnumNames<bool>{{"a", false}, {"R_p", true}},
-                     "Whether the parabola is fixed by its tensile radius a or by the pressure summit "
-                     "radius R_p, with a^2 = 2 R_p P.");
+                     "Parabolic load only: whether the parabola is fixed by its tensile radius a or by "
+                     "the pressure summit radius R_p, with a^2 = 2 R_p P.");
       entries.number("Tension radius a", load.tension_radius, 1.25, magnitude("m"),
-                     "Radius where the parabolic tension vanishes. Units: m.");
+                     "Parabolic load only: radius where the tension vanishes. Units: m.");
       entries.number("Summit radius R_p", load.summit_radius, 7.8125e-7, magnitude("m^2/Pa"),
-                     "Radius of the pressure summit, p = P - r^2/(2 R_p). Units: m^2/Pa.");
-      if (!by_summit_radius || !entries.reading())
+                     "Parabolic load only: radius of the pressure summit, p = P - r^2/(2 R_p). Units: "
+                     "m^2/Pa.");
+      if (!by_summit_radius || !entries.reading() || load.type != LoadParameters::Type::parabolic)
         return;
       entries.require(load.peak_tension > 0, "Peak tension P", load.peak_tension,
                       "(0, 1e30] Pa when the parabola is given by R_p");
@@ -271,6 +273,7 @@ namespace penny
 
   void parabola_section(Sections &sections, LoadParameters &load)
   {
+    load.type = LoadParameters::Type::parabolic;
     sections.subsection("Load", [&](Entries &entries) {
       peak_tension_entry(entries, load.peak_tension);
       // The scenes of the parabola alone scale their errors by P.
@@ -278,7 +281,6 @@ namespace penny
                       "(0, 1e30] Pa: the parabola's peak is a tension");
       parabola_entries(entries, load);
     });
-    load.type = LoadParameters::Type::parabolic;
   }
 
   void ring_section(Sections &sections, std::vector<double> &ring_radii, const GeometryParameters &geometry)

@@ -43,7 +43,8 @@ namespace penny
       entries.increasing_numbers(
           "Ring radii", ring_radii, {0.25, 0.5, 0.75}, 1, interval("()", 0, 1),
           "Outer radii of the J-integral domains around the tip, weight q = (1 - (d/rho)^2)^4; "
-          "inside the domain for every c below 4 D/lambda too. The searches use the last. "
+          "inside the domain for every c below 4 D/lambda too. The searches and periodic-gap-depth use the "
+          "last. "
           "Units: min(c, lambda/2 - c).");
       // min(c, lambda/2 - c) is at most lambda/4: rings below 4 D/lambda stay above z = -D.
       const double largest = std::min(1., 4 * depth);

@@ -111,7 +111,14 @@ namespace penny
       void inputs(Sections &sections) override
       {
         gap.sections(sections, &load);
-        sections.check([&] { check_cycle_sizes(); });
+        sections.check([&] {
+          // A gmsh mesh has no tip levels: every cycle would be the same.
+          if (sequence.strategy == Strategy::tip_grading &&
+              gap.model.mesh.generator == MeshParameters::Generator::gmsh)
+            throw InputError("Convergence/Strategy = tip-grading needs Mesh/Generator = builtin (a gmsh mesh "
+                             "has no tip levels to add; uniform-h, degree or adaptive refine it)");
+          check_cycle_sizes();
+        });
       }
 
       void entries(Entries &entries) override
@@ -128,7 +135,9 @@ namespace penny
             "levels'; degree, degree 1 to 4 on the scene's mesh; domain-size, R/c = H/c from 10 to 1e4 "
             "at the scene's near-tip mesh; adaptive, from the mesh with 'First tip levels', each cycle "
             "refines the 'Refined fraction' of cells with the largest Kelly error indicators of the "
-            "displacement.");
+            "displacement. The entry a sequence varies (Mesh/Global refinements, Mesh/Tip refinement "
+            "levels, Finite element/Polynomial degree, Geometry/Domain radius R and Domain height H) is "
+            "replaced in each cycle.");
         entries.integer("Cycles", sequence.cycles, 4u, 1u, 30u, "Number of discretisations. Units: none.");
         entries.integer("First tip levels", sequence.first_tip_levels, 4u, 0u, 40u,
                         "tip-grading and adaptive: levels of cycle 0. Units: none.");
