@@ -192,6 +192,28 @@ BOOST_AUTO_TEST_CASE(bad_entries)
                "Load/Peak tension P = 1e+31 is outside the allowed range 0 or |x| in [1e-30, 1e30] Pa"));
 }
 
+// The .prm scan reads lines as deal.II does: trimmed (CR too) before a
+// continuation, tabs as spaces, keywords in lower or upper case.
+BOOST_AUTO_TEST_CASE(prm_lines_read_as_deal_ii_reads_them)
+{
+  const SceneFile file =
+      read_text("set Scene = area-load\r\nsubsection Area-load\r\n set Magnifications = 1, \\ \r\n"
+                "\t100\r\nEND\r\n");
+  BOOST_TEST(mentions(file.used_parameters, "= 1, 100"));
+  BOOST_TEST(mentions(
+      error_of("subsection Mesh\n set Tip refinement levels = 12\n set Tip\trefinement levels = 14\nend\n"),
+      "line 3: Mesh/Tip refinement levels is set a second time (first on line 2)"));
+  BOOST_TEST(mentions(
+      error_of(
+          "subsection Mesh\n set Tip refinement levels = 12 # was 10 \\\n set Grading distance = 3\nend\n"),
+      "line 2: a comment ends in '\\', which would join the next line to the comment"));
+  BOOST_TEST(
+      mentions(error_of("Subsection Mesh\nend\n"),
+               "line 1: 'Subsection': a keyword is all lower or all upper case (subsection or SUBSECTION)"));
+  BOOST_TEST(mentions(error_of("subsection Mesh\nend Mesh\n"), "line 2: 'end' takes nothing after it"));
+  BOOST_TEST(mentions(error_of("include\n"), "line 1: 'include' without a file name"));
+}
+
 // The sinusoid's scenes: the shipped periodic gap, the sections each reads,
 // and the checks across entries.
 BOOST_AUTO_TEST_CASE(sinusoid_scenes)

@@ -21,8 +21,15 @@ namespace penny
       return start == std::string::npos ? "" : line.substr(start, line.find_first_of(" \t\r", start) - start);
     }
 
-    // One statement of a .prm file: its keyword (set, subsection, end,
-    // include, in any case) and the rest of the line.
+    std::string upper_case(std::string word)
+    {
+      std::transform(word.begin(), word.end(), word.begin(),
+                     [](const unsigned char ch) { return std::toupper(ch); });
+      return word;
+    }
+
+    // One statement of a .prm file: its keyword (set, subsection, end or
+    // include, lower-cased) and the rest of the line.
     std::pair<std::string, std::string> statement(const std::string &line)
     {
       const std::string trimmed = dealii::Utilities::trim(line);
@@ -65,9 +72,17 @@ namespace penny
               throw InputError("parameter file " + in_quotes(filename) +
                                " starts with a UTF-8 byte-order mark; save it without one (plain UTF-8 or "
                                "ASCII)");
-            // A backslash at the end continues the line.
+            // As deal.II's reader: each line trimmed, a backslash at its end
+            // joins the next (trimmed) line to it, then the comment goes.
+            line = dealii::Utilities::trim(line);
             for (std::string next; !line.empty() && line.back() == '\\' && std::getline(in, next); ++number)
-              line = line.substr(0, line.size() - 1) + next;
+              {
+                if (line.find('#') != std::string::npos)
+                  throw InputError((open_files.size() > 1 ? in_quotes(filename) + ", " : "") + "line " +
+                                   std::to_string(number) +
+                                   ": a comment ends in '\\', which would join the next line to the comment");
+                line = line.substr(0, line.size() - 1) + dealii::Utilities::trim(next);
+              }
             // Lines of an included file name the file.
             const std::string where =
                 (open_files.size() > 1 ? in_quotes(filename) + ", " : "") + "line " + std::to_string(first);
@@ -82,12 +97,21 @@ namespace penny
                                "comment (a .json or .xml parameter file takes any character)");
             if (comment != std::string::npos)
               line.erase(comment);
+            std::replace(line.begin(), line.end(), '\t', ' ');
             const auto [keyword, rest] = statement(line);
             result.sets_any            = result.sets_any || !keyword.empty();
             if (!keyword.empty() && keyword != "set" && keyword != "subsection" && keyword != "end" &&
                 keyword != "include")
               throw InputError(where + ": " + in_quotes(first_word(line)) +
                                " starts no statement (a line is set, subsection, end, include or a comment)");
+            if (!keyword.empty() && first_word(line) != keyword && first_word(line) != upper_case(keyword))
+              throw InputError(where + ": " + in_quotes(first_word(line)) +
+                               ": a keyword is all lower or all upper case (" + keyword + " or " +
+                               upper_case(keyword) + ")");
+            if (keyword == "end" && !rest.empty())
+              throw InputError(where + ": 'end' takes nothing after it");
+            if (keyword == "include" && rest.empty())
+              throw InputError(where + ": 'include' without a file name");
             if (keyword == "subsection" && rest.empty())
               throw InputError(where + ": 'subsection' without a name");
             if (keyword == "subsection")
