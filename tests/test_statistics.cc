@@ -219,6 +219,14 @@ BOOST_AUTO_TEST_CASE(exact_gap_law_properties)
   BOOST_TEST(penny::exact_gap_law(0)(2.) == 2.);
 }
 
+// Weak adhesion puts the stable gap millions of c_min out (the search had
+// stopped at 2^21 c_min): the exact law then tends to the adhesionless P.
+BOOST_AUTO_TEST_CASE(exact_gap_law_at_weak_adhesion)
+{
+  for (const double adhesion : {1e-12, 1e-30})
+    BOOST_TEST(exact_gap_law(adhesion)(1.) == 1., tt::tolerance(1e-6));
+}
+
 BOOST_AUTO_TEST_CASE(tabulated_gap_law_accuracy)
 {
   // Chebyshev interpolation in t reproduces a polynomial in t exactly and the

@@ -20,7 +20,9 @@ namespace penny
     if (P == p0)
       return c_min;
     const auto f = [&](const double c) { return P - adhesive_tension(c, R_p, K_Ic); };
-    return root_above(f, c_min, f(c_min), "closed-form stable gap radius", closed_form_root_bits);
+    // Cheap to evaluate: the search may span the doubles (weak adhesion puts
+    // the stable gap millions of c_min out).
+    return root_above(f, c_min, f(c_min), "closed-form stable gap radius", closed_form_root_bits, 1000);
   }
 
   double adhesion_length(const double R_p, const double K_Ic)

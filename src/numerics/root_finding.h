@@ -30,18 +30,20 @@ namespace penny
     return 0.5 * (bracket.first + bracket.second);
   }
 
-  // The first root above lo, where f(lo) > 0: the bracket widens geometrically
-  // until f changes sign. `what` names the root in errors.
+  // The first root above lo, where f(lo) > 0: the bracket doubles, at most
+  // `doublings` times, until f changes sign. `what` names the root in errors.
   template <typename F>
-  double root_above(F &&f, double lo, double f_lo, const std::string &what, const int bits = fe_root_bits)
+  double root_above(F &&f, double lo, double f_lo, const std::string &what, const int bits = fe_root_bits,
+                    const unsigned int doublings = 21)
   {
     if (!(f_lo > 0))
       throw std::runtime_error(what + ": the search starts where the function is not positive");
     double hi = 2 * lo, f_hi = f(hi);
-    for (unsigned int k = 0; f_hi > 0; ++k, f_hi = f(hi))
+    for (unsigned int k = 1; f_hi > 0; ++k, f_hi = f(hi))
       {
-        if (k == 20)
-          throw std::runtime_error(what + ": no root up to 2^21 times where the search started");
+        if (k == doublings)
+          throw std::runtime_error(what + ": no root up to 2^" + std::to_string(doublings) +
+                                   " times where the search started");
         lo   = hi;
         f_lo = f_hi;
         hi *= 2;

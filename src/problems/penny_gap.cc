@@ -171,9 +171,10 @@ namespace penny
                       magnitude("m").text + " (a^2 = 2 R_p P)");
     }
 
-    void peak_tension_entry(Entries &entries, double &peak_tension)
+    void peak_tension_entry(Entries &entries, double &peak_tension,
+                            const Range &range = signed_magnitude("Pa"))
     {
-      entries.number("Peak tension P", peak_tension, 1e6, signed_magnitude("Pa"),
+      entries.number("Peak tension P", peak_tension, 1e6, range,
                      "P: the uniform value, or the peak of the parabola at r = 0. Units: Pa.");
     }
   } // namespace
@@ -275,10 +276,8 @@ namespace penny
   {
     load.type = LoadParameters::Type::parabolic;
     sections.subsection("Load", [&](Entries &entries) {
-      peak_tension_entry(entries, load.peak_tension);
-      // The scenes of the parabola alone scale their errors by P.
-      entries.require(!entries.reading() || load.peak_tension > 0, "Peak tension P", load.peak_tension,
-                      "(0, 1e30] Pa: the parabola's peak is a tension");
+      // The scenes of the parabola alone scale their errors by P: a tension.
+      peak_tension_entry(entries, load.peak_tension, magnitude("Pa"));
       parabola_entries(entries, load);
     });
   }

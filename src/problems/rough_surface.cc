@@ -14,7 +14,8 @@ namespace penny
     {
       entries.number("Hurst exponent H", roughness.hurst, 0.75, interval("[)", smallest_hurst_exponent, 1),
                      use + "Units: none.");
-      entries.number("Magnification zeta", roughness.zeta, 1000, above(1),
+      // Beyond 1e30 the spectral moments leave the range of a double.
+      entries.number("Magnification zeta", roughness.zeta, 1000, interval("(]", 1, 1e30),
                      use + "q1/q0, the bandwidth of the power law. Units: none.");
     }
   } // namespace

@@ -45,6 +45,15 @@ namespace penny
             try
               {
                 const GapPopulation gaps = surface.population(hurst, zeta);
+                // The closed forms' units hold p0/sqrt(V) in this range (zero-load-gap-area's).
+                if (!(gaps.adhesion >= 1e-30 && gaps.adhesion <= 1e30 && std::isfinite(gaps.prefactor)))
+                  throw InputError("Area-load/Hurst exponents = " + shortest(hurst) +
+                                   " with Magnifications = " + shortest(zeta) + " give p0/sqrt(V) = " +
+                                   shortest(gaps.adhesion) + ", outside [1e-30, 1e30]" +
+                                   (surface.convention_is_paper
+                                        ? ""
+                                        : " (the consistent convention's p0/sqrt(V) also follows Roughness "
+                                          "q0 and h0/lambda0, the Material and the Adhesion)"));
                 const GapPopulation adhesionless{gaps.prefactor, 0};
                 const auto          exact = exact_gap_law(gaps.adhesion);
                 for (unsigned int i = 0; i < mean_pressures.n_points; ++i)
@@ -64,12 +73,14 @@ namespace penny
                 summary.add_row({hurst, zeta, gaps.adhesion, gaps.prefactor,
                                  linear_law_noncontact_area(gaps, 0), noncontact_area(gaps, exact, 0)});
               }
+            catch (const InputError &)
+              {
+                throw;
+              }
             catch (const std::runtime_error &error) // a closed form's root search out of its reach
               {
                 throw InputError("Area-load/Hurst exponents = " + shortest(hurst) +
-                                 " with Magnifications = " + shortest(zeta) + ": " + error.what() +
-                                 " (the gaps span more sizes than the closed forms search; a larger H or a "
-                                 "smaller zeta)");
+                                 " with Magnifications = " + shortest(zeta) + ": " + error.what());
               }
         results.write_csv("area-load.csv", table);
         log << "Area-load curves, A_nc/A_0 against p_bar/sqrt(V) from " << mean_pressures.smallest << " to "

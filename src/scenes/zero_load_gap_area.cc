@@ -30,8 +30,11 @@ namespace penny
 
       void entries(Entries &entries) override
       {
-        entries.number("Largest p0/sqrt(V)", largest_adhesion_ratio, 5, interval("[]", 0, 1e30),
-                       "p0/sqrt(V) runs from 0 to this value. Units: none.");
+        // Below 1e-250 K_Ic of the closed forms' units underflows.
+        entries.number(
+            "Largest p0/sqrt(V)", largest_adhesion_ratio, 5,
+            {"0 or [1e-30, 1e30]", [](const double x) { return x == 0 || (x >= 1e-30 && x <= 1e30); }},
+            "p0/sqrt(V) runs from 0 to this value. Units: none.");
         entries.integer("Number of points", n_points, 61u, 2u, 100000u,
                         "Values of p0/sqrt(V), evenly spaced. Units: none.");
       }
