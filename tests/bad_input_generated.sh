@@ -10,6 +10,10 @@
 #                 the working folder (deal.II's rule), where it is not
 #   byte-order-mark  a UTF-8 byte-order mark before the first statement
 #   nul-byte      a NUL byte inside a value, which cut the message there
+#   json-nul      the same in a JSON value (an escaped \u0000)
+#   json-array    a JSON array where an entry's value belongs
+#   json-deep     JSON objects nested 100000 deep, which overflowed the stack
+#                 of Boost's parser (a crash)
 set -eu
 penny=$1 case=$2 expected=$3
 here=$(cd "$(dirname "$0")" && pwd)
@@ -33,6 +37,18 @@ case $case in
     ;;
   byte-order-mark)
     printf '\357\273\277set Scene = penny-gap\n' | cat - "$prm" > "$prm.new" && mv "$prm.new" "$prm"
+    ;;
+  json-nul)
+    prm=$folder/$case.json
+    printf '{"Scene": "penny-gap", "Output": {"Directory": "o\\u0000ut"}}' > "$prm"
+    ;;
+  json-array)
+    prm=$folder/$case.json
+    printf '{"Scene": ["penny-gap"]}' > "$prm"
+    ;;
+  json-deep)
+    prm=$folder/$case.json
+    /usr/bin/python3 -c "print('{\"a\": ' * 100000 + '1' + '}' * 100000)" > "$prm"
     ;;
   nul-byte)
     printf 'set Scene = penny\000gap\n' >> "$prm"

@@ -7,9 +7,13 @@
 #include <boost/property_tree/json_parser.hpp>
 #include <boost/property_tree/xml_parser.hpp>
 
+#include <algorithm>
 #include <cctype>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <set>
+#include <sstream>
 #include <vector>
 
 namespace penny
@@ -18,6 +22,9 @@ namespace penny
 
   namespace
   {
+    // Far beyond any parameter file's subsections.
+    constexpr unsigned int max_nesting = 1000;
+
     // deal.II writes names in XML (and may in JSON) with every character
     // other than a letter or digit as _XX, its code in hex. Anything else
     // (_00, _41: a control character, a letter) is not such a code and
@@ -47,6 +54,48 @@ namespace penny
     std::string value_of(const boost::property_tree::ptree &node)
     {
       return node.empty() ? node.data() : node.get<std::string>("value");
+    }
+
+    // The deepest nesting of the file's objects (JSON) or elements (XML),
+    // counted before Boost's recursive parser, which a deep enough file
+    // overflows the stack of.
+    unsigned int nesting_depth(const std::string &text, const bool json)
+    {
+      unsigned int depth = 0, deepest = 0;
+      bool         in_string = false;
+      for (std::size_t i = 0; i < text.size(); ++i)
+        {
+          const char c = text[i];
+          if (json && in_string)
+            in_string = !(c == '"' && text[i - 1] != '\\');
+          else if (json && c == '"')
+            in_string = true;
+          else if (json ? (c == '{' || c == '[') : (c == '<' && i + 1 < text.size() && text[i + 1] != '/'))
+            deepest = std::max(deepest, ++depth);
+          else if (json ? (c == '}' || c == ']')
+                        : ((c == '<' || c == '/') && i + 1 < text.size() &&
+                           text[i + 1] == (c == '<' ? '/' : '>')))
+            depth -= depth > 0;
+        }
+      return deepest;
+    }
+
+    // Every name and value is text without NUL, and no JSON array stands
+    // where an entry or a subsection belongs.
+    void check_tree(const boost::property_tree::ptree &node, const std::string &where)
+    {
+      if (node.data().find('\0') != std::string::npos)
+        throw InputError("a NUL byte in the value of " + where);
+      for (const auto &[key, child] : node)
+        {
+          const std::string name = (where.empty() ? "" : where + "/") + demangled(key);
+          if (key.empty())
+            throw InputError("an array " + (where.empty() ? "at the top" : "in " + where) +
+                             "; entries are \"name\": \"value\" pairs, subsections objects");
+          if (key.find('\0') != std::string::npos)
+            throw InputError("a NUL byte in a name in " + (where.empty() ? "the top level" : where));
+          check_tree(child, name);
+        }
     }
 
     void set_entries(ParameterHandler &prm, const boost::property_tree::ptree &node,
@@ -98,13 +147,20 @@ namespace penny
   {
     const std::string           extension = std::filesystem::path(filename).extension();
     boost::property_tree::ptree tree;
+    std::ifstream               in(filename);
+    if (!in)
+      throw InputError("parameter file " + in_quotes(filename) + " cannot be read");
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+    if (nesting_depth(text, extension == ".json") > max_nesting)
+      throw InputError("its objects or elements nest deeper than " + std::to_string(max_nesting) + " levels");
     try
       {
+        std::istringstream stream(text);
         if (extension == ".json")
-          boost::property_tree::read_json(filename, tree);
+          boost::property_tree::read_json(stream, tree);
         else
           {
-            boost::property_tree::read_xml(filename, tree);
+            boost::property_tree::read_xml(stream, tree);
             tree = tree.get_child("ParameterHandler");
           }
       }
@@ -113,6 +169,7 @@ namespace penny
         throw InputError("parameter file " + in_quotes(filename) + " is not valid " + extension.substr(1) +
                          ": " + one_line(error.what()));
       }
+    check_tree(tree, "");
     return tree;
   }
 
