@@ -58,8 +58,7 @@ for column, hurst in enumerate(hursts):
             axes.plot(*drawn(rows, "A_nc linear closed form", "A_nc linear > 1"), "-", color=colour,
                       label=rf"$\zeta$ = {zeta:g}")
             axes.plot(*drawn(rows, "A_nc exact g", "A_nc exact g > 1"), "--", color=colour, lw=1)
-        loads, adhesionless = drawn(rows, "A_nc adhesionless")
-        axes.plot(loads, [value if value <= 1 else numpy.nan for value in adhesionless], "k:", label="no adhesion")
+        axes.plot(*drawn(rows, "A_nc adhesionless", "A_nc adhesionless > 1"), "k:", label="no adhesion")
         axes.set_yscale(scale)
         if scale == "log":
             axes.set_ylim(1e-12, 1.5)
