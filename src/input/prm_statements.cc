@@ -99,13 +99,14 @@ namespace penny
               line.erase(comment);
             std::replace(line.begin(), line.end(), '\t', ' ');
             const auto [keyword, rest] = statement(line);
+            const std::string word     = first_word(line); // the keyword as written
             result.sets_any            = result.sets_any || !keyword.empty();
             if (!keyword.empty() && keyword != "set" && keyword != "subsection" && keyword != "end" &&
                 keyword != "include")
-              throw InputError(where + ": " + in_quotes(first_word(line)) +
+              throw InputError(where + ": " + in_quotes(word) +
                                " starts no statement (a line is set, subsection, end, include or a comment)");
-            if (!keyword.empty() && first_word(line) != keyword && first_word(line) != upper_case(keyword))
-              throw InputError(where + ": " + in_quotes(first_word(line)) +
+            if (!keyword.empty() && word != keyword && word != upper_case(keyword))
+              throw InputError(where + ": " + in_quotes(word) +
                                ": a keyword is all lower or all upper case (" + keyword + " or " +
                                upper_case(keyword) + ")");
             if (keyword == "end" && !rest.empty())
