@@ -13,7 +13,9 @@
 #   json-nul      the same in a JSON value (an escaped \u0000)
 #   json-array    a JSON array where an entry's value belongs
 #   json-deep     JSON objects nested 100000 deep, which overflowed the stack
-#                 of Boost's parser (a crash)
+#                 of Boost's parser (a crash); json-deep-escaped with keys
+#                 ending in an escaped backslash, xml-deep with '/>' in the
+#                 text, which a first count of the depth missed
 set -eu
 penny=$1 case=$2 expected=$3
 here=$(cd "$(dirname "$0")" && pwd)
@@ -49,6 +51,14 @@ case $case in
   json-deep)
     prm=$folder/$case.json
     /usr/bin/python3 -c "print('{\"a\": ' * 100000 + '1' + '}' * 100000)" > "$prm"
+    ;;
+  json-deep-escaped)
+    prm=$folder/$case.json
+    /usr/bin/python3 -c "print('{\"k\\\\\\\\\": ' * 100000 + '1' + '}' * 100000)" > "$prm"
+    ;;
+  xml-deep)
+    prm=$folder/$case.xml
+    /usr/bin/python3 -c "print('<ParameterHandler>' + '<a>/>' * 100000 + '</a>' * 100000 + '</ParameterHandler>')" > "$prm"
     ;;
   nul-byte)
     printf 'set Scene = penny\000gap\n' >> "$prm"

@@ -212,6 +212,9 @@ BOOST_AUTO_TEST_CASE(prm_lines_read_as_deal_ii_reads_them)
                "line 1: 'Subsection': a keyword is all lower or all upper case (subsection or SUBSECTION)"));
   BOOST_TEST(mentions(error_of("subsection Mesh\nend Mesh\n"), "line 2: 'end' takes nothing after it"));
   BOOST_TEST(mentions(error_of("include\n"), "line 1: 'include' without a file name"));
+  // Only a line that ends in a backslash joins the next: a value ending in
+  // one keeps it when the next line is blank; the file's last line may end in one.
+  BOOST_TEST(read_text("subsection Output\n set Directory = o\\\\\n\nend\\").output_directory == "o\\");
 }
 
 // The sinusoid's scenes: the shipped periodic gap, the sections each reads,

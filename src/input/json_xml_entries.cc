@@ -56,26 +56,63 @@ namespace penny
       return node.empty() ? node.data() : node.get<std::string>("value");
     }
 
-    // The deepest nesting of the file's objects (JSON) or elements (XML),
-    // counted before Boost's recursive parser, which a deep enough file
-    // overflows the stack of.
-    unsigned int nesting_depth(const std::string &text, const bool json)
+    // The deepest nesting of a JSON file's objects and arrays, counted
+    // before Boost's recursive parser, which a deep enough file overflows the
+    // stack of.
+    unsigned int json_depth(const std::string &text)
     {
       unsigned int depth = 0, deepest = 0;
       bool         in_string = false;
       for (std::size_t i = 0; i < text.size(); ++i)
         {
           const char c = text[i];
-          if (json && in_string)
-            in_string = !(c == '"' && text[i - 1] != '\\');
-          else if (json && c == '"')
-            in_string = true;
-          else if (json ? (c == '{' || c == '[') : (c == '<' && i + 1 < text.size() && text[i + 1] != '/'))
+          if (in_string && c == '\\')
+            ++i; // an escaped character
+          else if (c == '"')
+            in_string = !in_string;
+          else if (!in_string && (c == '{' || c == '['))
             deepest = std::max(deepest, ++depth);
-          else if (json ? (c == '}' || c == ']')
-                        : ((c == '<' || c == '/') && i + 1 < text.size() &&
-                           text[i + 1] == (c == '<' ? '/' : '>')))
+          else if (!in_string && (c == '}' || c == ']'))
             depth -= depth > 0;
+        }
+      return deepest;
+    }
+
+    // The same for an XML file's elements: a start tag opens one (unless it
+    // ends in '/>'), an end tag closes one; comments, CDATA, declarations and
+    // processing instructions are skipped whole.
+    unsigned int xml_depth(const std::string &text)
+    {
+      unsigned int depth = 0, deepest = 0;
+      for (std::size_t i = text.find('<'); i != std::string::npos && i + 1 < text.size();
+           i             = text.find('<', i))
+        {
+                      const auto skip_past = [&](const std::string &end) {
+            const std::size_t at = text.find(end, i + 1);
+            return at == std::string::npos ? text.size() : at + end.size();
+          };
+                      if (text.compare(i, 4, "<!--") == 0)
+            i = skip_past("-->");
+          else if (text.compare(i, 9, "<![CDATA[") == 0)
+            i = skip_past("]]>");
+          else if (text[i + 1] == '?' || text[i + 1] == '!')
+            i = skip_past(">");
+          else if (text[i + 1] == '/')
+            {
+                          depth -= depth > 0;
+                          i = skip_past(">");
+            }
+          else
+            {
+                          // The tag's end, past quoted attribute values.
+              std::size_t end = i + 1;
+              for (char quote = 0; end < text.size() && (quote || text[end] != '>'); ++end)
+                if (quote ? text[end] == quote : (text[end] == '"' || text[end] == '\''))
+                  quote = quote ? 0 : text[end];
+              if (end < text.size() && text[end - 1] != '/')
+                deepest = std::max(deepest, ++depth);
+              i = end;
+            }
         }
       return deepest;
     }
@@ -84,8 +121,12 @@ namespace penny
     // where an entry or a subsection belongs.
     void check_tree(const boost::property_tree::ptree &node, const std::string &where)
     {
-      if (node.data().find('\0') != std::string::npos)
+      // deal.II's own format: of an entry's record only the value is read.
+      const auto &value = node.get_child_optional("value");
+      if ((value ? value->data() : node.data()).find('\0') != std::string::npos)
         throw InputError("a NUL byte in the value of " + where);
+      if (value)
+        return;
       for (const auto &[key, child] : node)
         {
           const std::string name = (where.empty() ? "" : where + "/") + demangled(key);
@@ -146,17 +187,18 @@ namespace penny
   boost::property_tree::ptree read_json_xml_tree(const std::string &filename)
   {
     const std::string           extension = std::filesystem::path(filename).extension();
+    const bool                  json      = extension == ".json";
     boost::property_tree::ptree tree;
     std::ifstream               in(filename);
     if (!in)
       throw InputError("parameter file " + in_quotes(filename) + " cannot be read");
     const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    if (nesting_depth(text, extension == ".json") > max_nesting)
+    if ((json ? json_depth(text) : xml_depth(text)) > max_nesting)
       throw InputError("its objects or elements nest deeper than " + std::to_string(max_nesting) + " levels");
     try
       {
         std::istringstream stream(text);
-        if (extension == ".json")
+        if (json)
           boost::property_tree::read_json(stream, tree);
         else
           {

@@ -72,16 +72,24 @@ namespace penny
               throw InputError("parameter file " + in_quotes(filename) +
                                " starts with a UTF-8 byte-order mark; save it without one (plain UTF-8 or "
                                "ASCII)");
-            // As deal.II's reader: each line trimmed, a backslash at its end
-            // joins the next (trimmed) line to it, then the comment goes.
-            line = dealii::Utilities::trim(line);
-            for (std::string next; !line.empty() && line.back() == '\\' && std::getline(in, next); ++number)
+            // As deal.II's reader: each line trimmed; while one ends in a
+            // backslash, the next (trimmed) line is joined to it without it;
+            // then the comment goes.
+            line           = dealii::Utilities::trim(line);
+            bool continues = !line.empty() && line.back() == '\\';
+            if (continues)
+              line.pop_back();
+            for (std::string next; continues && std::getline(in, next); ++number)
               {
                 if (line.find('#') != std::string::npos)
                   throw InputError((open_files.size() > 1 ? in_quotes(filename) + ", " : "") + "line " +
                                    std::to_string(number) +
                                    ": a comment ends in '\\', which would join the next line to the comment");
-                line = line.substr(0, line.size() - 1) + dealii::Utilities::trim(next);
+                next      = dealii::Utilities::trim(next);
+                continues = !next.empty() && next.back() == '\\';
+                if (continues)
+                  next.pop_back();
+                line += next;
               }
             // Lines of an included file name the file.
             const std::string where =
