@@ -84,14 +84,14 @@ namespace penny
     unsigned int xml_depth(const std::string &text)
     {
       unsigned int depth = 0, deepest = 0;
-      for (std::size_t i = text.find('<'); i != std::string::npos && i + 1 < text.size();
-           i             = text.find('<', i))
+      std::size_t  i         = text.find('<');
+      const auto   skip_past = [&](const std::string &end) {
+        const std::size_t at = text.find(end, i + 1);
+        return at == std::string::npos ? text.size() : at + end.size();
+      };
+      while (i != std::string::npos && i + 1 < text.size())
         {
-                      const auto skip_past = [&](const std::string &end) {
-            const std::size_t at = text.find(end, i + 1);
-            return at == std::string::npos ? text.size() : at + end.size();
-          };
-                      if (text.compare(i, 4, "<!--") == 0)
+          if (text.compare(i, 4, "<!--") == 0)
             i = skip_past("-->");
           else if (text.compare(i, 9, "<![CDATA[") == 0)
             i = skip_past("]]>");
@@ -99,12 +99,12 @@ namespace penny
             i = skip_past(">");
           else if (text[i + 1] == '/')
             {
-                          depth -= depth > 0;
-                          i = skip_past(">");
+              depth -= depth > 0;
+              i = skip_past(">");
             }
           else
             {
-                          // The tag's end, past quoted attribute values.
+              // The tag's end, past quoted attribute values.
               std::size_t end = i + 1;
               for (char quote = 0; end < text.size() && (quote || text[end] != '>'); ++end)
                 if (quote ? text[end] == quote : (text[end] == '"' || text[end] == '\''))
@@ -113,6 +113,7 @@ namespace penny
                 deepest = std::max(deepest, ++depth);
               i = end;
             }
+          i = text.find('<', i);
         }
       return deepest;
     }

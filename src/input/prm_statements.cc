@@ -28,16 +28,20 @@ namespace penny
       return word;
     }
 
+    std::string lower_case(std::string word)
+    {
+      std::transform(word.begin(), word.end(), word.begin(),
+                     [](const unsigned char ch) { return std::tolower(ch); });
+      return word;
+    }
+
     // One statement of a .prm file: its keyword (set, subsection, end or
     // include, lower-cased) and the rest of the line.
     std::pair<std::string, std::string> statement(const std::string &line)
     {
       const std::string trimmed = dealii::Utilities::trim(line);
-      std::string       keyword = first_word(trimmed);
-      const std::string rest    = dealii::Utilities::trim(trimmed.substr(keyword.size()));
-      std::transform(keyword.begin(), keyword.end(), keyword.begin(),
-                     [](const unsigned char ch) { return std::tolower(ch); });
-      return {keyword, rest};
+      const std::string word    = first_word(trimmed);
+      return {lower_case(word), dealii::Utilities::trim(trimmed.substr(word.size()))};
     }
 
     class StatementScan
@@ -64,6 +68,10 @@ namespace penny
         unsigned int number = 0;
         // Each file balances its own subsections, as deal.II's reader requires.
         const std::size_t outer = path.size();
+        // Lines of an included file name the file.
+        const auto line_at = [&](const unsigned int n) {
+          return (open_files.size() > 1 ? in_quotes(filename) + ", " : "") + "line " + std::to_string(n);
+        };
         while (std::getline(in, line))
           {
             const unsigned int first = ++number;
@@ -82,8 +90,7 @@ namespace penny
             for (std::string next; continues && std::getline(in, next); ++number)
               {
                 if (line.find('#') != std::string::npos)
-                  throw InputError((open_files.size() > 1 ? in_quotes(filename) + ", " : "") + "line " +
-                                   std::to_string(number) +
+                  throw InputError(line_at(number) +
                                    ": a comment ends in '\\', which would join the next line to the comment");
                 next      = dealii::Utilities::trim(next);
                 continues = !next.empty() && next.back() == '\\';
@@ -91,9 +98,7 @@ namespace penny
                   next.pop_back();
                 line += next;
               }
-            // Lines of an included file name the file.
-            const std::string where =
-                (open_files.size() > 1 ? in_quotes(filename) + ", " : "") + "line " + std::to_string(first);
+            const std::string where = line_at(first);
             // deal.II's reader and every message would end the text there.
             if (line.find('\0') != std::string::npos)
               throw InputError(where + ": a NUL byte; a .prm file is text");
