@@ -18,7 +18,7 @@ namespace penny
 {
   using namespace dealii;
 
-  void PeriodicGapInput::sections(Sections &sections)
+  void PeriodicGapInput::sections(Sections &sections, const bool read_depth)
   {
     elastic_model_sections(sections, model, ModelDimension::two);
     sections.subsection("Periodic gap", [&](Entries &entries) {
@@ -29,12 +29,14 @@ namespace penny
           "Period of the sinusoid and of its array of gaps; the model is the half period 0 <= x <= "
           "lambda/2. Units: m.");
       double depth = 0;
-      entries.number(
-          "Depth D", depth, 3, interval("(]", 0, 100, "lambda"),
-          "Depth of the solid from the crack plane z = 0 to its far side z = D, which is free (the "
-          "perturbation of the gaps decays like exp(-2 pi z/lambda)); the periodic-gap-depth scene "
-          "replaces it by each of 'Depth study/Depths'. Units: lambda.");
-      model.depth = depth * model.wavelength;
+      if (read_depth)
+        {
+          entries.number(
+              "Depth D", depth, 3, interval("(]", 0, 100, "lambda"),
+              "Depth of the solid from the crack plane z = 0 to its far side z = D, which is free (the "
+              "perturbation of the gaps decays like exp(-2 pi z/lambda)). Units: lambda.");
+          model.depth = depth * model.wavelength;
+        }
       entries.integer("Tip refinement levels", model.tip_levels, 24u, 0u, 40u,
                       "Cells at the tip are min(c, lambda/2 - c)/2^levels wide. Units: none.");
       entries.number("Grading distance", model.grading_distance, 3, interval("[]", 0.5, 10),
@@ -47,10 +49,13 @@ namespace penny
           "last. "
           "Units: min(c, lambda/2 - c).");
       // min(c, lambda/2 - c) is at most lambda/4: rings below 4 D/lambda stay above z = -D.
-      const double largest = std::min(1., 4 * depth);
-      for (const double rho : ring_radii)
-        entries.require(rho < largest, "Ring radii", rho,
-                        "(0, min(1, 4 D/lambda) = " + shortest(largest) + ")");
+      if (read_depth)
+        {
+          const double largest = std::min(1., 4 * depth);
+          for (const double rho : ring_radii)
+            entries.require(rho < largest, "Ring radii", rho,
+                            "(0, min(1, 4 D/lambda) = " + shortest(largest) + ")");
+        }
     });
   }
 

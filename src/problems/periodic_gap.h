@@ -21,13 +21,14 @@ namespace penny
   // What every periodic-gap scene reads: Material, Periodic gap (the
   // wavelength, depth, mesh and J-integral rings, in units of
   // min(c, lambda/2 - c)), Finite element and Linear solver. The gap
-  // half-width is the scene's.
+  // half-width is the scene's. A scene that sets the depth itself (the depth
+  // study) reads no Depth D and checks the rings against its own depths.
   struct PeriodicGapInput
   {
     PeriodicGapModelParameters model;
     std::vector<double>        ring_radii;
 
-    void sections(Sections &sections);
+    void sections(Sections &sections, bool read_depth = true);
   };
 
   // One gap and its Bueckner tension t = p* cos(2 pi x/lambda) - p_bar.
@@ -59,9 +60,8 @@ namespace penny
   // `fields`, the displacement of the load written there.
   PeriodicGapMeasurement solve_periodic_gap(const PeriodicGapModelParameters &model,
                                             const BuecknerTension            &load,
-                                            const std::vector<double>        &ring_radii,
-                                            dealii::TimerOutput              &timer,
-                                            const ResultFolder               *fields = nullptr);
+                                            const std::vector<double> &ring_radii, dealii::TimerOutput &timer,
+                                            const ResultFolder *fields = nullptr);
 
   // What the scenes that search over the half-width share: a timer of the
   // phases and the family of models of the input (J on its last ring). Every

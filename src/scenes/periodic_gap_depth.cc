@@ -21,7 +21,7 @@ namespace penny
     {
       void inputs(Sections &sections) override
       {
-        periodic.sections(sections);
+        periodic.sections(sections, false);
         gap_and_load_section(sections, gap);
         sections.check([&] {
           const double largest_ring =
@@ -36,8 +36,8 @@ namespace penny
       {
         entries.increasing_numbers(
             "Depths", depths, {0.25, 0.5, 0.75, 1, 1.5, 2, 3}, 1, interval("(]", 0, 100, "lambda"),
-            "Depths D of the truncated solid, one solve each, in place of 'Periodic gap/Depth D'. Units: "
-            "lambda.");
+            "Depths D of the truncated solid, one solve each; every ring of 'Periodic gap/Ring radii' must "
+            "lie below 4 D/lambda. Units: lambda.");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
