@@ -9,7 +9,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <filesystem>
 #include <fstream>
 #include <iterator>
 #include <set>
@@ -118,8 +117,8 @@ namespace penny
       return deepest;
     }
 
-    // Every name and value is text without NUL, and no JSON array stands
-    // where an entry or a subsection belongs.
+    // Every name and value is text without NUL, and no JSON array or XML
+    // attribute stands where an entry or a subsection belongs.
     void check_tree(const boost::property_tree::ptree &node, const std::string &where)
     {
       // deal.II's own format: of an entry's record only the value is read.
@@ -136,6 +135,10 @@ namespace penny
                              "; entries are \"name\": \"value\" pairs, subsections objects");
           if (key.find('\0') != std::string::npos)
             throw InputError("a NUL byte in a name in " + (where.empty() ? "the top level" : where));
+          // Boost's XML reader keeps an element's attributes under this key.
+          if (key == "<xmlattr>")
+            throw InputError("an XML attribute " + (where.empty() ? "at the top" : "in " + where) +
+                             "; entries are elements <name>value</name>, subsections elements holding them");
           check_tree(child, name);
         }
     }
@@ -185,10 +188,8 @@ namespace penny
     }
   } // namespace
 
-  boost::property_tree::ptree read_json_xml_tree(const std::string &filename)
+  boost::property_tree::ptree read_json_xml_tree(const std::string &filename, const bool json)
   {
-    const std::string           extension = std::filesystem::path(filename).extension();
-    const bool                  json      = extension == ".json";
     boost::property_tree::ptree tree;
     std::ifstream               in(filename);
     if (!in)
@@ -209,8 +210,8 @@ namespace penny
       }
     catch (const boost::property_tree::ptree_error &error)
       {
-        throw InputError("parameter file " + in_quotes(filename) + " is not valid " + extension.substr(1) +
-                         ": " + one_line(error.what()));
+        throw InputError("parameter file " + in_quotes(filename) + " is not valid " +
+                         (json ? "JSON" : "XML") + ": " + one_line(error.what()));
       }
     check_tree(tree, "");
     return tree;

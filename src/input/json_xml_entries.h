@@ -13,9 +13,9 @@
 
 namespace penny
 {
-  // The tree of `filename` (.json or .xml). Throws InputError (one line) if
-  // it is not valid JSON or XML.
-  boost::property_tree::ptree read_json_xml_tree(const std::string &filename);
+  // The tree of `filename`, JSON if `json`, else XML. Throws InputError (one
+  // line) if it is not valid JSON or XML.
+  boost::property_tree::ptree read_json_xml_tree(const std::string &filename, bool json);
 
   // The top-level 'Scene' entry of the tree, if it is set.
   std::optional<std::string> scene_of(const boost::property_tree::ptree &tree);

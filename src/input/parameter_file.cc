@@ -6,6 +6,8 @@
 
 #include <deal.II/base/exceptions.h>
 
+#include <boost/algorithm/string/case_conv.hpp>
+
 #include <filesystem>
 #include <regex>
 #include <typeinfo>
@@ -18,9 +20,11 @@ namespace penny
   {
     if (!std::filesystem::is_regular_file(filename))
       throw InputError("parameter file " + in_quotes(filename) + " does not exist or is not a file");
-    const std::string extension = std::filesystem::path(filename).extension();
-    ParameterFile     file{filename, "", {filename}, {}, {}};
-    bool              sets_any = false;
+    // Of any case, as deal.II reads it.
+    const std::string extension =
+        boost::algorithm::to_lower_copy(std::filesystem::path(filename).extension().string());
+    ParameterFile file{filename, "", {filename}, {}, {}};
+    bool          sets_any = false;
     if (extension == ".prm")
       {
         file.statements = scan_prm_statements(filename);
@@ -30,7 +34,7 @@ namespace penny
       }
     else if (extension == ".json" || extension == ".xml")
       {
-        file.tree  = read_json_xml_tree(filename);
+        file.tree  = read_json_xml_tree(filename, extension == ".json");
         file.scene = scene_of(file.tree);
         sets_any   = !file.tree.empty();
       }
