@@ -16,11 +16,11 @@ using namespace penny;
 
 namespace
 {
-  // Writes `text` to a parameter file and reads it.
-  SceneFile read_text(const std::string &text)
+  // Writes `text` to a parameter file named `name` and reads it.
+  SceneFile read_text(const std::string &text, const std::string &name = "scene.prm")
   {
     const ScratchFolder scratch;
-    const auto          path = scratch.path / "scene.prm";
+    const auto          path = scratch.path / name;
     if (dealii::Utilities::MPI::this_mpi_process(MPI_COMM_WORLD) == 0)
       std::ofstream(path) << text;
     MPI_Barrier(MPI_COMM_WORLD);
@@ -28,11 +28,11 @@ namespace
   }
 
   // The InputError message for `text`, which must be one line.
-  std::string error_of(const std::string &text)
+  std::string error_of(const std::string &text, const std::string &name = "scene.prm")
   {
     try
       {
-        read_text(text);
+        read_text(text, name);
       }
     catch (const InputError &error)
       {
@@ -65,10 +65,14 @@ BOOST_AUTO_TEST_CASE(entries_declared_and_read_from_one_list)
 {
   double              number = 0;
   std::vector<double> list;
+  int                 choice  = 0;
+  bool                flag    = false;
   const auto          entries = [&](Sections &sections) {
     sections.subsection("Part", [&](Entries &entries) {
       entries.number("Number", number, 2.5, interval("(]", 0, 10, "m"), "A number. Units: m.");
       entries.numbers("List", list, {1, 2}, interval("()", 0, 1e3), "Numbers.");
+      entries.choice("Choice", choice, 1, {{"one", 1}, {"two", 2}}, "A choice.");
+      entries.flag("Flag", flag, true, "A flag.");
     });
   };
   dealii::ParameterHandler prm;
@@ -87,6 +91,8 @@ BOOST_AUTO_TEST_CASE(entries_declared_and_read_from_one_list)
   std::ostringstream printed;
   prm.print_parameters(printed, dealii::ParameterHandler::PRM);
   BOOST_TEST(mentions(printed.str(), "A number. Units: m. Allowed: (0, 10] m."));
+  BOOST_TEST(mentions(printed.str(), "A choice. Allowed: one, two."));
+  BOOST_TEST(mentions(printed.str(), "A flag. Allowed: true, false."));
 }
 
 BOOST_AUTO_TEST_CASE(defaults)
@@ -187,6 +193,12 @@ BOOST_AUTO_TEST_CASE(bad_entries)
   // One bound for every load: an expression beyond 1e30 Pa as for P itself.
   BOOST_TEST(mentions(error_of("subsection Load\n set Type = expression\n set Expression = 1e31\nend\n"),
                       "Load/Expression = '1e31' gives |p| up to 1e+31 Pa on the gap face"));
+  // A list of cases holds no value twice.
+  BOOST_TEST(
+      mentions(error_of("set Scene = area-load\nsubsection Area-load\n set Hurst exponents = 0.5, 0.25, "
+                        "0.5\nend\n"),
+               "Area-load/Hurst exponents = 0.5 is outside the allowed range a list of distinct numbers in "
+               "[0.01, 1)"));
   BOOST_TEST(
       mentions(error_of("subsection Load\n set Peak tension P = 1e31\nend\n"),
                "Load/Peak tension P = 1e+31 is outside the allowed range 0 or |x| in [1e-30, 1e30] Pa"));
@@ -215,6 +227,20 @@ BOOST_AUTO_TEST_CASE(prm_lines_read_as_deal_ii_reads_them)
   // Only a line that ends in a backslash joins the next: a value ending in
   // one keeps it when the next line is blank; the file's last line may end in one.
   BOOST_TEST(read_text("subsection Output\n set Directory = o\\\\\n\nend\\").output_directory == "o\\");
+}
+
+// The file's kind by its extension in any case, as deal.II's parse_input tells it.
+BOOST_AUTO_TEST_CASE(extension_of_any_case)
+{
+  BOOST_TEST(read_text("set Scene = area-load\n", "scene.PRM").type->name == "area-load");
+  BOOST_TEST(read_text("{\"Scene\": \"area-load\"}", "scene.Json").type->name == "area-load");
+  BOOST_TEST(
+      read_text("<ParameterHandler><Scene>area-load</Scene></ParameterHandler>", "scene.XML").type->name ==
+      "area-load");
+  BOOST_TEST(mentions(error_of("set Scene = area-load\n", "scene.txt"), "is neither .prm, .json nor .xml"));
+  BOOST_TEST(mentions(
+      error_of("<ParameterHandler><Scene kind=\"x\">area-load</Scene></ParameterHandler>", "scene.xml"),
+      "an XML attribute in "));
 }
 
 // The sinusoid's scenes: the shipped periodic gap, the sections each reads,

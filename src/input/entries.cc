@@ -3,6 +3,7 @@
 #include <deal.II/base/exceptions.h>
 #include <deal.II/base/utilities.h>
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
@@ -163,7 +164,10 @@ namespace penny
                         const std::vector<double> &defaults, const Range &range,
                         const std::string &documentation)
   {
-    number_list(entry, values, defaults, range, "a list of", documentation);
+    number_list(entry, values, defaults, range, "a list of distinct", documentation);
+    for (auto x = values.begin(); x != values.end(); ++x)
+      require(std::find(values.begin(), x, *x) == x, entry, *x,
+              "a list of distinct numbers in " + range.text);
   }
 
   void Entries::number_list(const std::string &entry, std::vector<double> &values,
@@ -265,9 +269,22 @@ namespace penny
                      const std::string &documentation)
   {
     if (!reading_)
-      prm.declare_entry(entry, default_value ? "true" : "false", Patterns::Bool(), documentation);
+      prm.declare_entry(entry, default_value ? "true" : "false", Patterns::Bool(),
+                        documented(documentation, "true, false"));
     else
       value = prm.get_bool(entry);
+  }
+
+  void Entries::selection(const std::string &entry, std::string &value, const std::string &default_value,
+                          const std::vector<std::string> &options, const std::string &documentation)
+  {
+    std::string pattern, listed;
+    for (const std::string &option : options)
+      {
+        pattern += (pattern.empty() ? "" : "|") + option;
+        listed += (listed.empty() ? "" : ", ") + option;
+      }
+    text_entry(entry, value, default_value, Patterns::Selection(pattern), documented(documentation, listed));
   }
 
   void Entries::text_entry(const std::string &entry, std::string &value, const std::string &default_value,

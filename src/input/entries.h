@@ -82,7 +82,8 @@ namespace penny
         value = static_cast<Integer>(read);
     }
 
-    // A comma-separated list of at least one number, each in `range`.
+    // A comma-separated list of at least one number, each in `range`, none
+    // twice: a list of cases.
     void numbers(const std::string &entry, std::vector<double> &values, const std::vector<double> &defaults,
                  const Range &range, const std::string &documentation);
 
@@ -104,14 +105,15 @@ namespace penny
     void choice(const std::string &entry, Enum &value, Enum default_value, const EnumNames<Enum> &names,
                 const std::string &documentation)
     {
-      std::string options, chosen, default_name;
+      std::vector<std::string> options;
+      std::string              chosen, default_name;
       for (const auto &[name, option] : names)
         {
-          options += (options.empty() ? "" : "|") + name;
+          options.push_back(name);
           if (option == default_value)
             default_name = name;
         }
-      text_entry(entry, chosen, default_name, dealii::Patterns::Selection(options), documentation);
+      selection(entry, chosen, default_name, options, documentation);
       for (const auto &[name, option] : names)
         if (reading_ && name == chosen)
           value = option;
@@ -153,6 +155,9 @@ namespace penny
                          bool increasing, const std::string &documentation);
     void integer_entry(const std::string &entry, long long &value, long long default_value, long long lo,
                        long long hi, const std::string &documentation);
+    // One of `options`, which the printed documentation lists.
+    void selection(const std::string &entry, std::string &value, const std::string &default_value,
+                   const std::vector<std::string> &options, const std::string &documentation);
     // An entry read as text that matches `pattern`.
     void text_entry(const std::string &entry, std::string &value, const std::string &default_value,
                     const dealii::Patterns::PatternBase &pattern, const std::string &documentation);

@@ -199,11 +199,6 @@ namespace penny
             "front table; the searches use phi = 0 and pi/2 only. On a gap with b/a < 1 the points between "
             "lie between the mesh's front vertices, where the front weight's ends fall inside cells: K_I "
             "there is good to a few 1e-4 only. Units: none.");
-        if (!entries.reading())
-          return;
-        for (auto ratio = tension_aspect_ratios.begin(); ratio != tension_aspect_ratios.end(); ++ratio)
-          entries.require(std::find(tension_aspect_ratios.begin(), ratio, *ratio) == ratio,
-                          "Tension aspect ratios Ay/Ax", *ratio, "distinct numbers in [0.05, 1]");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
