@@ -48,7 +48,7 @@ namespace penny
         if (!(result.reference.back() > 0))
           throw std::runtime_error(
               "J-integral: the reference load gives K_I = 0 on a ring, so it cannot sign "
-              "K_I (is the ring far smaller than the cells at the tip?)");
+              "K_I (is a value of the entry Ring radii far smaller than the cells at the tip?)");
       }
     for (unsigned int l = 0; l < r; ++l)
       {
