@@ -3,6 +3,9 @@
 #include <deal.II/base/exceptions.h>
 
 #include <algorithm>
+#include <new>
+#include <stdexcept>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -35,6 +38,19 @@ namespace penny
       }
     upper.finalize();
     factors.cholmod().print = 0; // failures are reported through info(), in one line
-    factors.compute(upper);
+    // CHOLMOD out of memory is the run's; Eigen's factorize reads the
+    // analysis's factor without checking that CHOLMOD could make it, so a
+    // failed analysis stops before it.
+    const auto out_of_memory = [&] {
+      if (factors.cholmod().status == CHOLMOD_OUT_OF_MEMORY)
+        throw std::bad_alloc();
+    };
+    factors.analyzePattern(upper);
+    out_of_memory();
+    if (factors.cholmod().status < CHOLMOD_OK)
+      throw std::runtime_error("solve: CHOLMOD could not analyse the stiffness matrix (status " +
+                               std::to_string(factors.cholmod().status) + ")");
+    factors.factorize(upper);
+    out_of_memory();
   }
 } // namespace penny

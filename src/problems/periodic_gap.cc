@@ -32,7 +32,7 @@ namespace penny
       if (read_depth)
         {
           entries.number(
-              "Depth D", depth, 3, interval("(]", 0, 100, "lambda"),
+              "Depth D", depth, 3, interval("[]", smallest_depth, 100, "lambda"),
               "Depth of the solid from the crack plane z = 0 to its far side z = D, which is free (the "
               "perturbation of the gaps decays like exp(-2 pi z/lambda)). Units: lambda.");
           model.depth = depth * model.wavelength;
@@ -45,9 +45,8 @@ namespace penny
       entries.increasing_numbers(
           "Ring radii", ring_radii, {0.25, 0.5, 0.75}, 1, interval("()", 0, 1),
           "Outer radii of the J-integral domains around the tip, weight q = (1 - (d/rho)^2)^4; "
-          "inside the domain for every c below 4 D/lambda too. The searches and periodic-gap-depth use the "
-          "last. "
-          "Units: min(c, lambda/2 - c).");
+          "inside the domain for every c: below 4 D/lambda (D the Depth D, or each of the depth study's "
+          "Depths). The searches and periodic-gap-depth use the last. Units: min(c, lambda/2 - c).");
       // min(c, lambda/2 - c) is at most lambda/4: rings below 4 D/lambda stay above z = -D.
       if (read_depth)
         {

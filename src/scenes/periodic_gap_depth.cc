@@ -35,7 +35,8 @@ namespace penny
       void entries(Entries &entries) override
       {
         entries.increasing_numbers(
-            "Depths", depths, {0.25, 0.5, 0.75, 1, 1.5, 2, 3}, 1, interval("(]", 0, 100, "lambda"),
+            "Depths", depths, {0.25, 0.5, 0.75, 1, 1.5, 2, 3}, 1,
+            interval("[]", smallest_depth, 100, "lambda"),
             "Depths D of the truncated solid, one solve each; every ring of 'Periodic gap/Ring radii' must "
             "lie below 4 D/lambda. Units: lambda.");
       }
