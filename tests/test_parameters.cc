@@ -193,11 +193,15 @@ BOOST_AUTO_TEST_CASE(bad_entries)
   // One bound for every load: an expression beyond 1e30 Pa as for P itself.
   BOOST_TEST(mentions(error_of("subsection Load\n set Type = expression\n set Expression = 1e31\nend\n"),
                       "Load/Expression = '1e31' gives |p| up to 1e+31 Pa on the gap face"));
+  // The depth study's depths, as the periodic gap's depth, from 0.05 lambda.
+  BOOST_TEST(mentions(
+      error_of("set Scene = periodic-gap-depth\nsubsection Depth study\n set Depths = 0.01, 1\nend\n"),
+      "Depth study/Depths = 0.01 is outside the allowed range [0.05, 100] lambda"));
   // A list of cases holds no value twice.
   BOOST_TEST(
       mentions(error_of("set Scene = area-load\nsubsection Area-load\n set Hurst exponents = 0.5, 0.25, "
                         "0.5\nend\n"),
-               "Area-load/Hurst exponents = 0.5 is outside the allowed range a list of distinct numbers in "
+               "Area-load/Hurst exponents = '0.5, 0.25, 0.5' holds 0.5 twice: a list of distinct numbers in "
                "[0.01, 1)"));
   BOOST_TEST(
       mentions(error_of("subsection Load\n set Peak tension P = 1e31\nend\n"),
@@ -241,6 +245,37 @@ BOOST_AUTO_TEST_CASE(extension_of_any_case)
   BOOST_TEST(mentions(
       error_of("<ParameterHandler><Scene kind=\"x\">area-load</Scene></ParameterHandler>", "scene.xml"),
       "an XML attribute in "));
+}
+
+// JSON and XML files: comments skipped, deal.II's entry records read by their
+// value alone, and what they cannot hold refused by name.
+BOOST_AUTO_TEST_CASE(json_xml_files)
+{
+  const std::string xml_scene = "<ParameterHandler><Scene>area-load</Scene>";
+  BOOST_TEST(
+      read_text("<!-- a --><ParameterHandler><!-- b --><Scene>area-load</Scene><Output><Directory>o<!-- "
+                "c -->ut</Directory></Output></ParameterHandler>",
+                "scene.xml")
+          .output_directory == "out");
+  BOOST_TEST(
+      mentions(error_of(xml_scene + "<Output k=\"x\"><Directory>out</Directory></Output></ParameterHandler>",
+                        "scene.xml"),
+               "an XML attribute in Output;"));
+  BOOST_TEST(mentions(
+      error_of("<ParameterHandler><Scene><value k=\"x\">area-load</value></Scene></ParameterHandler>",
+               "scene.xml"),
+      "an XML attribute in Scene/value;"));
+  BOOST_TEST(mentions(error_of("<!DOCTYPE ParameterHandler [<!ENTITY d \"out\">]>" + xml_scene +
+                                   "<Output><Directory>&d;</Directory></Output></ParameterHandler>",
+                               "scene.xml"),
+                      "a DOCTYPE or other declaration"));
+  BOOST_TEST(
+      read_text("{\"Scene\": {\"value\": \"area-load\", \"default_value\": \"penny-gap\"}}", "scene.json")
+          .type->name == "area-load");
+  BOOST_TEST(mentions(error_of("{\"Scene\": {\"value\": \"area-load\", \"junk\": \"x\"}}", "scene.json"),
+                      "'junk' in the entry record of Scene"));
+  BOOST_TEST(mentions(error_of("{\"Scene\": {\"x\": \"area-load\"}}", "scene.json"),
+                      "Scene holds entries, not a scene's name"));
 }
 
 // The sinusoid's scenes: the shipped periodic gap, the sections each reads,

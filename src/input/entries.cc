@@ -166,8 +166,9 @@ namespace penny
   {
     number_list(entry, values, defaults, range, "a list of distinct", documentation);
     for (auto x = values.begin(); x != values.end(); ++x)
-      require(std::find(values.begin(), x, *x) == x, entry, *x,
-              "a list of distinct numbers in " + range.text);
+      if (std::find(values.begin(), x, *x) != x)
+        throw InputError(name(entry) + " = " + in_quotes(prm.get(entry)) + " holds " + shortest(*x) +
+                         " twice: a list of distinct numbers in " + range.text);
   }
 
   void Entries::number_list(const std::string &entry, std::vector<double> &values,

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstdlib>
+#include <regex>
 #include <sstream>
 #include <string>
 
@@ -14,6 +15,14 @@ namespace penny
     if (ok)
       return;
     throw InputError(entry + " = " + shortest(value) + " is outside the allowed range " + range);
+  }
+
+  std::string choices_in(const std::string &message)
+  {
+    std::smatch match;
+    if (!std::regex_search(message, match, std::regex("\\[(Selection (.*) |Bool)\\]")))
+      return "";
+    return match[1] == "Bool" ? "true, false" : std::regex_replace(match[2].str(), std::regex("\\|"), ", ");
   }
 
   std::string shortest(const double value)

@@ -78,8 +78,9 @@ namespace penny
     }
 
     // The same for an XML file's elements: a start tag opens one (unless it
-    // ends in '/>'), an end tag closes one; comments, CDATA, declarations and
-    // processing instructions are skipped whole.
+    // ends in '/>'), an end tag closes one; comments, CDATA and processing
+    // instructions are skipped whole. A DOCTYPE is refused: Boost's reader
+    // would leave the entities it declares unexpanded in the values.
     unsigned int xml_depth(const std::string &text)
     {
       unsigned int depth = 0, deepest = 0;
@@ -94,7 +95,10 @@ namespace penny
             i = skip_past("-->");
           else if (text.compare(i, 9, "<![CDATA[") == 0)
             i = skip_past("]]>");
-          else if (text[i + 1] == '?' || text[i + 1] == '!')
+          else if (text[i + 1] == '!')
+            throw InputError("a DOCTYPE or other declaration (" + text.substr(i, 10) +
+                             "...): its entities would not be expanded; write the values themselves");
+          else if (text[i + 1] == '?')
             i = skip_past(">");
           else if (text[i + 1] == '/')
             {
@@ -121,25 +125,37 @@ namespace penny
     // attribute stands where an entry or a subsection belongs.
     void check_tree(const boost::property_tree::ptree &node, const std::string &where)
     {
-      // deal.II's own format: of an entry's record only the value is read.
+      const std::string here = where.empty() ? "at the top" : "in " + where;
+      // Boost's XML reader keeps an element's attributes under this key.
+      if (node.count("<xmlattr>"))
+        throw InputError("an XML attribute " + here +
+                         "; entries are elements <name>value</name>, subsections elements holding them");
+      // deal.II's own format: of an entry's record only the value is read,
+      // which is text; the record holds only what deal.II writes in it.
       const auto &value = node.get_child_optional("value");
       if ((value ? value->data() : node.data()).find('\0') != std::string::npos)
         throw InputError("a NUL byte in the value of " + where);
       if (value)
-        return;
+        {
+          check_tree(*value, where + "/value");
+          if (!value->empty())
+            throw InputError("an element in the value of " + where);
+          for (const auto &[key, child] : node)
+            if (key != "value" && key != "default_value" && key != "documentation" && key != "pattern" &&
+                key != "pattern_description" && key != "actions")
+              throw InputError("'" + demangled(key) + "' in the entry record of " + where +
+                               ": a record holds value, default_value, documentation, pattern, "
+                               "pattern_description, actions");
+          return;
+        }
       for (const auto &[key, child] : node)
         {
-          const std::string name = (where.empty() ? "" : where + "/") + demangled(key);
           if (key.empty())
-            throw InputError("an array " + (where.empty() ? "at the top" : "in " + where) +
+            throw InputError("an array " + here +
                              "; entries are \"name\": \"value\" pairs, subsections objects");
           if (key.find('\0') != std::string::npos)
-            throw InputError("a NUL byte in a name in " + (where.empty() ? "the top level" : where));
-          // Boost's XML reader keeps an element's attributes under this key.
-          if (key == "<xmlattr>")
-            throw InputError("an XML attribute " + (where.empty() ? "at the top" : "in " + where) +
-                             "; entries are elements <name>value</name>, subsections elements holding them");
-          check_tree(child, name);
+            throw InputError("a NUL byte in a name " + here);
+          check_tree(child, (where.empty() ? "" : where + "/") + demangled(key));
         }
     }
 
@@ -180,7 +196,10 @@ namespace penny
             }
           catch (const dealii::ExceptionBase &exception)
             {
-              throw InputError(full + " = " + in_quotes(value) + ": " + one_line(exception));
+              const std::string text    = one_line(exception);
+              const std::string choices = choices_in(text);
+              throw InputError(full + " = " + in_quotes(value) +
+                               (choices.empty() ? ": " + text : " is not one of " + choices));
             }
           for (std::size_t i = 0; i < path.size(); ++i)
             prm.leave_subsection();
@@ -204,7 +223,7 @@ namespace penny
           boost::property_tree::read_json(stream, tree);
         else
           {
-            boost::property_tree::read_xml(stream, tree);
+            boost::property_tree::read_xml(stream, tree, boost::property_tree::xml_parser::no_comments);
             tree = tree.get_child("ParameterHandler");
           }
       }
@@ -221,7 +240,12 @@ namespace penny
   {
     for (const auto &[key, child] : tree)
       if (demangled(key) == "Scene")
-        return value_of(child);
+        {
+          if (!child.empty() && !child.get_child_optional("value"))
+            throw InputError("Scene holds entries, not a scene's name (\"Scene\": \"NAME\"; 'penny --help' "
+                             "lists the scenes)");
+          return value_of(child);
+        }
     return std::nullopt;
   }
 

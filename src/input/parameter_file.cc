@@ -49,8 +49,12 @@ namespace penny
 
   void parse_parameter_file(ParameterHandler &prm, const ParameterFile &file, const std::string &scene)
   {
+    // A JSON or XML file's entries are set one by one (input/json_xml_entries.h).
     if (!file.tree.empty())
-      set_json_xml_entries(prm, file.tree, scene);
+      {
+        set_json_xml_entries(prm, file.tree, scene);
+        return;
+      }
     try
       {
         prm.parse_input(file.filename);
@@ -74,22 +78,26 @@ namespace penny
         // is one the scene does not read.
         if (typeid(exception) == typeid(ParameterHandler::ExcNoSubsection) &&
             std::regex_search(message, match,
-                              std::regex("Line <([0-9]+)> of file <.*: There is no such subsection to be "
+                              std::regex("Line <([0-9]+)> of file <(.*): There is no such subsection to be "
                                          "entered: (.*)$")))
-          message = "line " + match[1].str() + ": subsection '" + match[2].str() + "' is not read by " +
-                    which + " ('penny --print-parameters " + scene + "' lists what it reads)";
+          {
+            // An included file is named, as the scan names its lines; deal.II joins the path with dots.
+            const bool included = std::filesystem::weakly_canonical(match[2].str()) !=
+                                  std::filesystem::weakly_canonical(file.filename);
+            message = (included ? in_quotes(match[2].str()) + ", " : "") + "line " + match[1].str() +
+                      ": subsection '" + std::regex_replace(match[3].str(), std::regex("\\."), "/") +
+                      "' is not read by " + which + " ('penny --print-parameters " + scene +
+                      "' lists what it reads)";
+          }
         // A value outside a choice (Selection or Bool), named with its subsection, the choices listed.
         else if (std::regex_search(
                      message, match,
-                     std::regex("Line <([0-9]+)> of file <(.*)>: The entry value (.*) for the entry "
-                                "named .* does not match the given pattern: \\[(Selection (.*) |Bool)\\]$")))
+                     std::regex("Line <([0-9]+)> of file <(.*)>: The entry value ?(.*) for the entry "
+                                "named .* does not match the given pattern: \\[(Selection .* |Bool)\\]$")))
           {
-            const std::string choices = match[4] == "Bool"
-                                            ? "true, false"
-                                            : std::regex_replace(match[5].str(), std::regex("\\|"), ", ");
             if (const auto set = statement())
               message = set->first + ": " + set->second + " = " + in_quotes(match[3].str()) +
-                        " is not one of " + choices;
+                        " is not one of " + choices_in(message);
           }
         // An entry the scene does not declare, named with its subsection.
         else if (std::regex_search(message, match,
