@@ -1,7 +1,7 @@
 // Parameter files in JSON or XML (deal.II's ParameterHandler reads both): a
 // tree of subsections and entries. deal.II reads them without naming the
 // entry whose value it rejects, and lets a repeated key win silently; here
-// each entry is set on its own first, so that an error names it.
+// each entry is set on its own instead, so that an error names it.
 #pragma once
 
 #include <deal.II/base/parameter_handler.h>
