@@ -276,6 +276,12 @@ BOOST_AUTO_TEST_CASE(json_xml_files)
                       "'junk' in the entry record of Scene"));
   BOOST_TEST(mentions(error_of("{\"Scene\": {\"x\": \"area-load\"}}", "scene.json"),
                       "Scene holds entries, not a scene's name"));
+  BOOST_TEST(mentions(
+      error_of("{\"Scene\": \"penny-gap\", \"Geometry\": {\"Far boundary\": \"Free\"}}", "scene.json"),
+      "Geometry/Far boundary = 'Free' is not one of free, clamped, far field"));
+  BOOST_TEST(mentions(
+      error_of(xml_scene + "</ParameterHandler><Output><Directory>x</Directory></Output>", "scene.xml"),
+      "is not one element <ParameterHandler> holding the entries"));
 }
 
 // The sinusoid's scenes: the shipped periodic gap, the sections each reads,

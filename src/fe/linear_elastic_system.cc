@@ -256,7 +256,7 @@ namespace penny
             if (cholesky->factors.info() != Eigen::Success)
               throw std::runtime_error(
                   "solve: CHOLMOD could not factorise the stiffness matrix: it is not positive definite (a "
-                  "solid free to move) or too large for the memory");
+                  "solid free to move)");
           }
         else
           {

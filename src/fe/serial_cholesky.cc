@@ -37,20 +37,25 @@ namespace penny
           upper.insertBack(i, column) = value;
       }
     upper.finalize();
-    factors.cholmod().print = 0; // failures are reported through info(), in one line
-    // CHOLMOD out of memory is the run's; Eigen's factorize reads the
-    // analysis's factor without checking that CHOLMOD could make it, so a
-    // failed analysis stops before it.
-    const auto out_of_memory = [&] {
-      if (factors.cholmod().status == CHOLMOD_OUT_OF_MEMORY)
+    factors.cholmod().print = 0; // failures are reported in one line: here, and by info()
+    // CHOLMOD's errors, checked after each step: Eigen's factorize reads the
+    // analysis's factor without checking that CHOLMOD could make it, and
+    // reports a failed factorisation as a success. A matrix that is not
+    // positive definite is a warning, which info() reports.
+    const auto check = [&](const std::string &step) {
+      const int status = factors.cholmod().status;
+      if (status == CHOLMOD_OUT_OF_MEMORY)
         throw std::bad_alloc();
+      if (status == CHOLMOD_TOO_LARGE)
+        throw std::runtime_error("solve: CHOLMOD could not " + step +
+                                 " the stiffness matrix: its factor is too large for CHOLMOD's indices");
+      if (status < CHOLMOD_OK)
+        throw std::runtime_error("solve: CHOLMOD could not " + step + " the stiffness matrix (status " +
+                                 std::to_string(status) + ")");
     };
     factors.analyzePattern(upper);
-    out_of_memory();
-    if (factors.cholmod().status < CHOLMOD_OK)
-      throw std::runtime_error("solve: CHOLMOD could not analyse the stiffness matrix (status " +
-                               std::to_string(factors.cholmod().status) + ")");
+    check("analyse");
     factors.factorize(upper);
-    out_of_memory();
+    check("factorise");
   }
 } // namespace penny

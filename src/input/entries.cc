@@ -165,10 +165,11 @@ namespace penny
                         const std::string &documentation)
   {
     number_list(entry, values, defaults, range, "a list of distinct", documentation);
-    for (auto x = values.begin(); x != values.end(); ++x)
-      if (std::find(values.begin(), x, *x) != x)
-        throw InputError(name(entry) + " = " + in_quotes(prm.get(entry)) + " holds " + shortest(*x) +
-                         " twice: a list of distinct numbers in " + range.text);
+    std::vector<double> sorted = values;
+    std::sort(sorted.begin(), sorted.end());
+    if (const auto twice = std::adjacent_find(sorted.begin(), sorted.end()); twice != sorted.end())
+      throw InputError(name(entry) + " = " + in_quotes(prm.get(entry)) + " holds " + shortest(*twice) +
+                       " twice: a list of distinct numbers in " + range.text);
   }
 
   void Entries::number_list(const std::string &entry, std::vector<double> &values,

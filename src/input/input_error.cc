@@ -20,7 +20,7 @@ namespace penny
   std::string choices_in(const std::string &message)
   {
     std::smatch match;
-    if (!std::regex_search(message, match, std::regex("\\[(Selection (.*) |Bool)\\]")))
+    if (!std::regex_search(message, match, std::regex("\\[(Selection (.*) |Bool)\\]>?\\.?$")))
       return "";
     return match[1] == "Bool" ? "true, false" : std::regex_replace(match[2].str(), std::regex("\\|"), ", ");
   }

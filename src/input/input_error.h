@@ -29,8 +29,8 @@ namespace penny
   // deal.II's exception text spans several lines; its explanation on one line.
   std::string one_line(const dealii::ExceptionBase &exception);
 
-  // The choices of the pattern a deal.II message quotes ("[Selection a|b ]"
-  // or "[Bool]") as "a, b" or "true, false"; empty if it quotes neither.
+  // The choices of the pattern a deal.II message ends with ("[Selection a|b ]"
+  // or "[Bool]") as "a, b" or "true, false"; empty if it names neither.
   std::string choices_in(const std::string &message);
 
   // The shortest text of `value` that reads back as `value`.

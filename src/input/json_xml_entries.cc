@@ -131,10 +131,12 @@ namespace penny
         throw InputError("an XML attribute " + here +
                          "; entries are elements <name>value</name>, subsections elements holding them");
       // deal.II's own format: of an entry's record only the value is read,
-      // which is text; the record holds only what deal.II writes in it.
-      const auto &value = node.get_child_optional("value");
+      // which is text; the record holds only what deal.II writes in it. The
+      // top level is no record.
+      const auto value = where.empty() ? boost::none : node.get_child_optional("value");
       if ((value ? value->data() : node.data()).find('\0') != std::string::npos)
-        throw InputError("a NUL byte in the value of " + where);
+        throw InputError(where.empty() ? "a NUL byte in the text at the top"
+                                       : "a NUL byte in the value of " + where);
       if (value)
         {
           check_tree(*value, where + "/value");
@@ -224,7 +226,11 @@ namespace penny
         else
           {
             boost::property_tree::read_xml(stream, tree, boost::property_tree::xml_parser::no_comments);
-            tree = tree.get_child("ParameterHandler");
+            // As deal.II's reader: one top-level element, ParameterHandler.
+            if (tree.size() != 1 || tree.front().first != "ParameterHandler")
+              throw InputError("parameter file " + in_quotes(filename) +
+                               " is not one element <ParameterHandler> holding the entries");
+            tree = tree.front().second;
           }
       }
     catch (const boost::property_tree::ptree_error &error)
