@@ -280,13 +280,8 @@ namespace penny
   void Entries::selection(const std::string &entry, std::string &value, const std::string &default_value,
                           const std::vector<std::string> &options, const std::string &documentation)
   {
-    std::string pattern, listed;
-    for (const std::string &option : options)
-      {
-        pattern += (pattern.empty() ? "" : "|") + option;
-        listed += (listed.empty() ? "" : ", ") + option;
-      }
-    text_entry(entry, value, default_value, Patterns::Selection(pattern), documented(documentation, listed));
+    text_entry(entry, value, default_value, Patterns::Selection(joined(options, "|")),
+               documented(documentation, joined(options, ", ")));
   }
 
   void Entries::text_entry(const std::string &entry, std::string &value, const std::string &default_value,

@@ -35,13 +35,13 @@ namespace penny
       return word;
     }
 
-    // One statement of a .prm file: its keyword (set, subsection, end or
-    // include, lower-cased) and the rest of the line.
+    // One statement of a .prm file: its keyword as written (set, subsection,
+    // end or include, in some case) and the rest of the line.
     std::pair<std::string, std::string> statement(const std::string &line)
     {
       const std::string trimmed = dealii::Utilities::trim(line);
       const std::string word    = first_word(trimmed);
-      return {lower_case(word), dealii::Utilities::trim(trimmed.substr(word.size()))};
+      return {word, dealii::Utilities::trim(trimmed.substr(word.size()))};
     }
 
     class StatementScan
@@ -111,9 +111,9 @@ namespace penny
             if (comment != std::string::npos)
               line.erase(comment);
             std::replace(line.begin(), line.end(), '\t', ' ');
-            const auto [keyword, rest] = statement(line);
-            const std::string word     = first_word(line); // the keyword as written
-            result.sets_any            = result.sets_any || !keyword.empty();
+            const auto [word, rest]   = statement(line);
+            const std::string keyword = lower_case(word);
+            result.sets_any           = result.sets_any || !keyword.empty();
             if (!keyword.empty() && keyword != "set" && keyword != "subsection" && keyword != "end" &&
                 keyword != "include")
               throw InputError(where + ": " + in_quotes(word) +
