@@ -282,6 +282,16 @@ BOOST_AUTO_TEST_CASE(json_xml_files)
   BOOST_TEST(mentions(
       error_of(xml_scene + "</ParameterHandler><Output><Directory>x</Directory></Output>", "scene.xml"),
       "is not one element <ParameterHandler> holding the entries"));
+  // Boost reads a null as the text "null", and {} as an empty entry; an
+  // error of syntax names the file and the line.
+  BOOST_TEST(
+      mentions(error_of("{\"Scene\": \"area-load\",\n \"Output\": {\"Directory\": null}}", "scene.json"),
+               "a null on line 2: a value is text"));
+  BOOST_TEST(read_text("{\"Scene\": \"area-load\", \"Output\": {}}", "scene.json").output_directory ==
+             "output");
+  BOOST_TEST(read_text(xml_scene + "<Output/></ParameterHandler>", "scene.xml").output_directory == "output");
+  BOOST_TEST(mentions(error_of("{\"Scene\": \"area-load\",\n \"Output\" {}}", "scene.json"),
+                      "scene.json' is not valid JSON: line 2: expected ':'"));
 }
 
 // The sinusoid's scenes: the shipped periodic gap, the sections each reads,

@@ -57,7 +57,7 @@ namespace penny
 
     // The deepest nesting of a JSON file's objects and arrays, counted
     // before Boost's recursive parser, which a deep enough file overflows the
-    // stack of.
+    // stack of. A null is refused: Boost reads it as the text "null".
     unsigned int json_depth(const std::string &text)
     {
       unsigned int depth = 0, deepest = 0;
@@ -73,6 +73,10 @@ namespace penny
             deepest = std::max(deepest, ++depth);
           else if (!in_string && (c == '}' || c == ']'))
             depth -= depth > 0;
+          else if (!in_string && text.compare(i, 4, "null") == 0)
+            throw InputError(
+                "a null on line " + std::to_string(1 + std::count(text.begin(), text.begin() + i, '\n')) +
+                ": a value is text (\"name\": \"value\"); leave an entry out to keep its default");
         }
       return deepest;
     }
@@ -174,10 +178,13 @@ namespace penny
           full += name;
           if (!seen.insert(name).second)
             throw InputError(full + " appears twice; set each entry once");
+          std::vector<std::string> subsection_path = path;
+          subsection_path.push_back(name);
+          // An empty subsection ({} or <Output/>) reads as an empty entry.
+          if (child.empty() && child.data().empty() && prm.subsection_path_exists(subsection_path))
+            continue;
           if (!child.empty() && !child.get_child_optional("value"))
             {
-              std::vector<std::string> subsection_path = path;
-              subsection_path.push_back(name);
               if (!prm.subsection_path_exists(subsection_path))
                 throw InputError("subsection '" + full + "' is not read by Scene = " + scene +
                                  " ('penny --print-parameters " + scene + "' lists what it reads)");
@@ -232,6 +239,12 @@ namespace penny
                                " is not one element <ParameterHandler> holding the entries");
             tree = tree.front().second;
           }
+      }
+    catch (const boost::property_tree::file_parser_error &error)
+      {
+        throw InputError("parameter file " + in_quotes(filename) + " is not valid " +
+                         (json ? "JSON" : "XML") + ": line " + std::to_string(error.line()) + ": " +
+                         one_line(error.message()));
       }
     catch (const boost::property_tree::ptree_error &error)
       {
