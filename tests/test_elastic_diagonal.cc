@@ -21,6 +21,8 @@
 #include <deal.II/matrix_free/tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
+#include "fe/matrix_free_templates.h"
+
 #include <boost/test/unit_test.hpp>
 
 #include <stdexcept>

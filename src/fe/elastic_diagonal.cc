@@ -1,5 +1,7 @@
 #include "fe/elastic_diagonal.h"
 
+#include "fe/matrix_free_templates.h"
+
 #include <array>
 #include <stdexcept>
 #include <vector>

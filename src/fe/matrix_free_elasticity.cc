@@ -1,29 +1,20 @@
 #include "fe/matrix_free_elasticity.h"
 
-#include "fe/elastic_diagonal.h"
+#include "fe/elastic_operator.h"
 
-#include <deal.II/base/quadrature_lib.h>
-#include <deal.II/dofs/dof_tools.h>
 #include <deal.II/fe/fe_q.h>
 #include <deal.II/fe/fe_system.h>
 #include <deal.II/lac/diagonal_matrix.h>
-#include <deal.II/lac/dynamic_sparsity_pattern.h>
 #include <deal.II/lac/la_parallel_vector.h>
 #include <deal.II/lac/precondition.h>
 #include <deal.II/lac/solver_cg.h>
-#include <deal.II/lac/sparsity_tools.h>
 #include <deal.II/lac/trilinos_solver.h>
 #include <deal.II/lac/trilinos_sparse_matrix.h>
-#include <deal.II/matrix_free/fe_evaluation.h>
-#include <deal.II/matrix_free/matrix_free.h>
-#include <deal.II/matrix_free/tools.h>
 #include <deal.II/multigrid/mg_coarse.h>
 #include <deal.II/multigrid/mg_matrix.h>
 #include <deal.II/multigrid/mg_smoother.h>
 #include <deal.II/multigrid/mg_transfer_global_coarsening.h>
 #include <deal.II/multigrid/multigrid.h>
-
-#include <algorithm>
 
 namespace penny
 {
@@ -31,111 +22,7 @@ namespace penny
 
   namespace
   {
-    using Vector = LinearAlgebra::distributed::Vector<double>;
-    // The degree is a run-time value: deal.II dispatches to its precompiled
-    // kernels of degrees 1 to 6 (and p + 2 points), a generic one above.
-    using Evaluation = ElasticEvaluation;
-
-    // A(u) on one degree's DoFHandler, the identity on constrained entries.
-    class ElasticOperator : public Subscriptor
-    {
-    public:
-      using value_type = double;
-
-      // With degree + extra_points Gauss points per direction.
-      void reinit(const Mapping<3> &mapping, const DoFHandler<3> &dof_handler,
-                  const AffineConstraints<double> &constraints, const IsotropicElasticity &elasticity,
-                  const unsigned int extra_points)
-      {
-        this->elasticity = elasticity;
-        MatrixFree<3, double>::AdditionalData data;
-        data.tasks_parallel_scheme = MatrixFree<3, double>::AdditionalData::none; // MPI ranks, not threads
-        data.mapping_update_flags  = update_gradients;
-        matrix_free.reinit(mapping, dof_handler, constraints,
-                           QGauss<1>(dof_handler.get_fe().degree + extra_points), data);
-      }
-
-      void                    initialize_dof_vector(Vector &v) const { matrix_free.initialize_dof_vector(v); }
-      types::global_dof_index m() const { return matrix_free.get_dof_handler().n_dofs(); }
-      // Chebyshev's interface names the entries, for a diagonal not given to
-      // it; ours always is (compute_inverse_diagonal).
-      double el(types::global_dof_index, types::global_dof_index) const
-      {
-        throw std::logic_error("a matrix-free operator has no entries to read");
-      }
-
-      void vmult(Vector &dst, const Vector &src) const
-      {
-        matrix_free.cell_loop(&ElasticOperator::apply_on_cells, this, dst, src, true);
-        for (const unsigned int i : matrix_free.get_constrained_dofs())
-          dst.local_element(i) = src.local_element(i);
-      }
-      void Tvmult(Vector &dst, const Vector &src) const { vmult(dst, src); }
-
-      // 1/A_ii, 1 on the constrained entries: Chebyshev's preconditioner.
-      void compute_inverse_diagonal(Vector &inverse) const
-      {
-        initialize_dof_vector(inverse);
-        // Hanging nodes tie DoFs to others, whose diagonal is not the sum of
-        // the cells': deal.II's unit-vector loop resolves them, more slowly.
-        if (matrix_free.get_dof_handler().get_triangulation().has_hanging_nodes())
-          MatrixFreeTools::compute_diagonal(matrix_free, inverse, &ElasticOperator::integrate, this);
-        else
-          add_elastic_diagonal(matrix_free, elasticity, inverse);
-        for (const unsigned int i : matrix_free.get_constrained_dofs())
-          inverse.local_element(i) = 1;
-        // A mapped cell turned inside out at a quadrature point (det J < 0)
-        // makes the operator indefinite; CG cannot solve it.
-        const unsigned int n_negative =
-            Utilities::MPI::sum(static_cast<unsigned int>(std::count_if(inverse.begin(), inverse.end(),
-                                                                        [](double d) { return !(d > 0); })),
-                                inverse.get_mpi_communicator());
-        if (n_negative > 0)
-          throw std::runtime_error(
-              "solve: the degree-" + std::to_string(matrix_free.get_dof_handler().get_fe().degree) +
-              " operator has " + std::to_string(n_negative) +
-              " diagonal entries <= 0: mapped cells are inverted at quadrature points, the stiffness is not "
-              "positive definite (a mesh too slender for this aspect ratio)");
-        for (double &entry : inverse)
-          entry = 1 / entry;
-      }
-
-      // The assembled matrix, for the coarsest degree's direct solve.
-      void assemble(TrilinosWrappers::SparseMatrix  &matrix,
-                    const AffineConstraints<double> &constraints) const
-      {
-        const DoFHandler<3> &dof_handler  = matrix_free.get_dof_handler();
-        const MPI_Comm       communicator = dof_handler.get_communicator();
-        IndexSet             relevant;
-        DoFTools::extract_locally_relevant_dofs(dof_handler, relevant);
-        DynamicSparsityPattern pattern(relevant);
-        DoFTools::make_sparsity_pattern(dof_handler, pattern, constraints, false);
-        SparsityTools::distribute_sparsity_pattern(pattern, dof_handler.locally_owned_dofs(), communicator,
-                                                   relevant);
-        matrix.reinit(dof_handler.locally_owned_dofs(), dof_handler.locally_owned_dofs(), pattern,
-                      communicator);
-        MatrixFreeTools::compute_matrix(matrix_free, constraints, matrix, &ElasticOperator::integrate, this);
-      }
-
-    private:
-      void integrate(Evaluation &phi) const { integrate_elastic_cell(phi, elasticity); }
-
-      void apply_on_cells(const MatrixFree<3, double> &, Vector &dst, const Vector &src,
-                          const std::pair<unsigned int, unsigned int> &cells) const
-      {
-        Evaluation phi(matrix_free);
-        for (unsigned int cell = cells.first; cell < cells.second; ++cell)
-          {
-            phi.reinit(cell);
-            phi.read_dof_values(src);
-            integrate(phi);
-            phi.distribute_local_to_global(dst);
-          }
-      }
-
-      MatrixFree<3, double> matrix_free;
-      IsotropicElasticity   elasticity{};
-    };
+    using Vector = ElasticOperator::Vector;
 
     // The coarsest degree solved exactly: MUMPS' factors of its matrix.
     class DirectCoarseSolve : public MGCoarseGridBase<Vector>
