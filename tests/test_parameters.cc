@@ -291,7 +291,7 @@ BOOST_AUTO_TEST_CASE(json_xml_files)
              "output");
   BOOST_TEST(read_text(xml_scene + "<Output/></ParameterHandler>", "scene.xml").output_directory == "output");
   BOOST_TEST(mentions(error_of("{\"Scene\": \"area-load\",\n \"Output\" {}}", "scene.json"),
-                      "scene.json' is not valid JSON: line 2: expected ':'"));
+                      "is not valid JSON: line 2: expected ':'"));
 }
 
 // The sinusoid's scenes: the shipped periodic gap, the sections each reads,
