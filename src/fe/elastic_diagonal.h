@@ -26,7 +26,9 @@
 namespace penny
 {
   // The cell evaluation of one FESystem of FE_Q (three components), its
-  // degree and points known at run time (deal.II's precompiled kernels).
+  // degree and points known at run time (deal.II's kernels for degrees 1 to
+  // 6 and a generic one above, instantiated at this machine's SIMD width by
+  // fe/matrix_free_templates.h).
   using ElasticEvaluation = dealii::FEEvaluation<3, -1, 0, 3, double>;
 
   // The cell's sigma(u) : e(v) from the values in `phi`, integrated back

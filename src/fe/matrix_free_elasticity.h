@@ -1,6 +1,6 @@
 // 3D elasticity without an assembled matrix: the operator a(u, v) = int
 // sigma(u):e(v) dV evaluated cell by cell from the shape functions'
-// tensor-product structure (deal.II's MatrixFree, sum factorisation), and
+// tensor-product structure (fe/elastic_operator.h), and
 // conjugate gradients preconditioned by one V-cycle of polynomial multigrid:
 // the same mesh with the degrees p, p - 1, ..., 1 (each evaluated with one
 // Gauss point per direction fewer than the system's operator), Chebyshev
