@@ -180,7 +180,7 @@ namespace penny
             throw InputError(full + " appears twice; set each entry once");
           std::vector<std::string> subsection_path = path;
           subsection_path.push_back(name);
-          // An empty subsection ({} or <Output/>) reads as an empty entry.
+          // Boost reads an empty subsection ({} or <Output/>) as an empty entry: it sets nothing.
           if (child.empty() && child.data().empty() && prm.subsection_path_exists(subsection_path))
             continue;
           if (!child.empty() && !child.get_child_optional("value"))
@@ -225,6 +225,10 @@ namespace penny
     const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     if ((json ? json_depth(text) : xml_depth(text)) > max_nesting)
       throw InputError("its objects or elements nest deeper than " + std::to_string(max_nesting) + " levels");
+    const auto invalid = [&](const std::string &detail) {
+      return InputError("parameter file " + in_quotes(filename) + " is not valid " + (json ? "JSON" : "XML") +
+                        ": " + detail);
+    };
     try
       {
         std::istringstream stream(text);
@@ -242,14 +246,11 @@ namespace penny
       }
     catch (const boost::property_tree::file_parser_error &error)
       {
-        throw InputError("parameter file " + in_quotes(filename) + " is not valid " +
-                         (json ? "JSON" : "XML") + ": line " + std::to_string(error.line()) + ": " +
-                         one_line(error.message()));
+        throw invalid("line " + std::to_string(error.line()) + ": " + one_line(error.message()));
       }
     catch (const boost::property_tree::ptree_error &error)
       {
-        throw InputError("parameter file " + in_quotes(filename) + " is not valid " +
-                         (json ? "JSON" : "XML") + ": " + one_line(error.what()));
+        throw invalid(one_line(error.what()));
       }
     check_tree(tree, "");
     return tree;
