@@ -10,47 +10,49 @@ namespace penny
 {
   using namespace dealii;
 
-  void integrate_elastic_cell(ElasticEvaluation &phi, const IsotropicElasticity &elasticity)
+  template <typename Number>
+  void integrate_elastic_cell(ElasticEvaluation<Number> &phi, const IsotropicElasticity &elasticity)
   {
+    const Number mu = elasticity.mu, lambda = elasticity.lambda;
     phi.evaluate(EvaluationFlags::gradients);
     for (const unsigned int q : phi.quadrature_point_indices())
       {
         const auto e = phi.get_symmetric_gradient(q);
-        phi.submit_symmetric_gradient(2 * elasticity.mu * e +
-                                          elasticity.lambda * trace(e) *
-                                              unit_symmetric_tensor<3, VectorizedArray<double>>(),
-                                      q);
+        phi.submit_symmetric_gradient(
+            2 * mu * e + lambda * trace(e) * unit_symmetric_tensor<3, VectorizedArray<Number>>(), q);
       }
     phi.integrate(EvaluationFlags::gradients);
   }
 
   namespace
   {
-    using Number = VectorizedArray<double>;
-
     // One step of sum factorisation: out = in contracted with the 1D matrix
     // f[m nq + q] over the index of stride `stride`, for `blocks` outer
     // blocks (of nq such indices in `in`, of n in `out`); added to `out` if
     // `add`.
-    void contract(const Number *in, const std::vector<double> &f, Number *out, const unsigned int n,
-                  const unsigned int nq, const unsigned int stride, const unsigned int blocks, const bool add)
+    template <typename Number>
+    void contract(const VectorizedArray<Number> *in, const std::vector<Number> &f,
+                  VectorizedArray<Number> *out, const unsigned int n, const unsigned int nq,
+                  const unsigned int stride, const unsigned int blocks, const bool add)
     {
       for (unsigned int o = 0; o < blocks; ++o)
         for (unsigned int m = 0; m < n; ++m)
           for (unsigned int s = 0; s < stride; ++s)
             {
-              Number sum = 0;
+              VectorizedArray<Number> sum = 0;
               for (unsigned int q = 0; q < nq; ++q)
                 sum += in[s + stride * (q + nq * o)] * f[m * nq + q];
-              Number &target = out[s + stride * (m + n * o)];
-              target         = add ? target + sum : sum;
+              VectorizedArray<Number> &target = out[s + stride * (m + n * o)];
+              target                          = add ? target + sum : sum;
             }
     }
   } // namespace
 
-  void add_elastic_diagonal(const MatrixFree<3, double> &matrix_free, const IsotropicElasticity &elasticity,
-                            LinearAlgebra::distributed::Vector<double> &diagonal)
+  template <typename Number>
+  void add_elastic_diagonal(const MatrixFree<3, Number> &matrix_free, const IsotropicElasticity &elasticity,
+                            LinearAlgebra::distributed::Vector<Number> &diagonal)
   {
+    using Lanes = VectorizedArray<Number>;
     // The constraint pool holds the weights of each kind of tie (a fixed
     // DoF's kind has none); deal.II resolves hanging nodes of FE_Q without it.
     bool tied = matrix_free.get_dof_handler().get_triangulation().has_hanging_nodes();
@@ -59,26 +61,27 @@ namespace penny
     if (tied)
       throw std::logic_error("add_elastic_diagonal: DoFs tied to others (hanging nodes); the diagonal "
                              "is not the sum of the cells'");
-    ElasticEvaluation  phi(matrix_free);
-    const auto        &shape = matrix_free.get_shape_info().data[0];
-    const unsigned int n = shape.fe_degree + 1, nq = shape.n_q_points_1d, n_points = nq * nq * nq;
-    const unsigned int per_component = n * n * n;
+    ElasticEvaluation<Number> phi(matrix_free);
+    const auto               &shape = matrix_free.get_shape_info().data[0];
+    const unsigned int        n = shape.fe_degree + 1, nq = shape.n_q_points_1d, n_points = nq * nq * nq;
+    const unsigned int        per_component = n * n * n;
 
     // The 1D factors [kind][i nq + q], kind = how many of the two gradient
     // directions a, b are this direction: f^2, f f', f'^2.
-    std::array<std::vector<double>, 3> factor;
+    std::array<std::vector<Number>, 3> factor;
     for (auto &f : factor)
       f.resize(n * nq);
     for (unsigned int iq = 0; iq < n * nq; ++iq)
       {
-        const double f = shape.shape_values[iq][0], df = shape.shape_gradients[iq][0];
+        const Number f = shape.shape_values[iq][0], df = shape.shape_gradients[iq][0];
         factor[0][iq] = f * f;
         factor[1][iq] = f * df;
         factor[2][iq] = df * df;
       }
 
-    std::vector<Tensor<2, 3, Number>> M(n_points);
-    std::vector<Number>               JxW(n_points), B(n_points), along_z(nq * nq * n), along_y(nq * n * n);
+    const Number                     mu = elasticity.mu, lambda = elasticity.lambda;
+    std::vector<Tensor<2, 3, Lanes>> M(n_points);
+    std::vector<Lanes>               JxW(n_points), B(n_points), along_z(nq * nq * n), along_y(nq * n * n);
     for (unsigned int cell = 0; cell < matrix_free.n_cell_batches(); ++cell)
       {
         phi.reinit(cell);
@@ -87,10 +90,10 @@ namespace penny
             M[q]   = phi.inverse_jacobian(q);
             JxW[q] = phi.JxW(q);
           }
-        Number *const values = phi.begin_dof_values();
+        Lanes *const values = phi.begin_dof_values();
         for (unsigned int c = 0; c < 3; ++c)
           {
-            Number *const d = values + c * per_component;
+            Lanes *const d = values + c * per_component;
             for (unsigned int i = 0; i < per_component; ++i)
               d[i] = 0;
             // The symmetric B: the entries a <= b, those off the diagonal twice.
@@ -99,14 +102,13 @@ namespace penny
                 {
                   for (unsigned int q = 0; q < n_points; ++q)
                     {
-                      Number column_product = 0;
+                      Lanes column_product = 0;
                       for (unsigned int k = 0; k < 3; ++k)
                         column_product += M[q][k][a] * M[q][k][b];
-                      B[q] = (a == b ? 1. : 2.) * JxW[q] *
-                             (elasticity.mu * column_product +
-                              (elasticity.lambda + elasticity.mu) * M[q][c][a] * M[q][c][b]);
+                      B[q] = Number(a == b ? 1 : 2) * JxW[q] *
+                             (mu * column_product + (lambda + mu) * M[q][c][a] * M[q][c][b]);
                     }
-                  const std::vector<double> &fx = factor[(a == 0) + (b == 0)],
+                  const std::vector<Number> &fx = factor[(a == 0) + (b == 0)],
                                             &fy = factor[(a == 1) + (b == 1)],
                                             &fz = factor[(a == 2) + (b == 2)];
                   // Points q = qx + nq (qy + nq qz); DoFs i + n (j + n k):
@@ -120,4 +122,11 @@ namespace penny
       }
     diagonal.compress(VectorOperation::add);
   }
+
+  template void integrate_elastic_cell(ElasticEvaluation<double> &, const IsotropicElasticity &);
+  template void integrate_elastic_cell(ElasticEvaluation<float> &, const IsotropicElasticity &);
+  template void add_elastic_diagonal(const MatrixFree<3, double> &, const IsotropicElasticity &,
+                                     LinearAlgebra::distributed::Vector<double> &);
+  template void add_elastic_diagonal(const MatrixFree<3, float> &, const IsotropicElasticity &,
+                                     LinearAlgebra::distributed::Vector<float> &);
 } // namespace penny

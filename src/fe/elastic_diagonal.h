@@ -29,12 +29,14 @@ namespace penny
   // degree and points known at run time (deal.II's kernels for degrees 1 to
   // 6 and a generic one above, instantiated at this machine's SIMD width by
   // fe/matrix_free_templates.h).
-  using ElasticEvaluation = dealii::FEEvaluation<3, -1, 0, 3, double>;
+  // Number: double for the system's operator, float for the multigrid's.
+  template <typename Number> using ElasticEvaluation = dealii::FEEvaluation<3, -1, 0, 3, Number>;
 
   // The cell's sigma(u) : e(v) from the values in `phi`, integrated back
   // into it: the matrix-free operator's cell kernel, whose diagonal
   // add_elastic_diagonal computes.
-  void integrate_elastic_cell(ElasticEvaluation &phi, const IsotropicElasticity &elasticity);
+  template <typename Number>
+  void integrate_elastic_cell(ElasticEvaluation<Number> &phi, const IsotropicElasticity &elasticity);
 
   // Adds the diagonal of a(u, v) over the cells of `matrix_free` (one
   // FESystem of FE_Q, three components) into `diagonal`, which
@@ -42,7 +44,8 @@ namespace penny
   // they were. The constraints must fix DoFs (zero displacements) and tie
   // none to others (no hanging nodes): a tied DoF's diagonal is not the sum
   // of its cells' (std::logic_error).
-  void add_elastic_diagonal(const dealii::MatrixFree<3, double>                &matrix_free,
+  template <typename Number>
+  void add_elastic_diagonal(const dealii::MatrixFree<3, Number>                &matrix_free,
                             const IsotropicElasticity                          &elasticity,
-                            dealii::LinearAlgebra::distributed::Vector<double> &diagonal);
+                            dealii::LinearAlgebra::distributed::Vector<Number> &diagonal);
 } // namespace penny

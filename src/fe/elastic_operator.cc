@@ -20,17 +20,17 @@ namespace penny
 {
   using namespace dealii;
 
-  struct ElasticOperator::Cells
+  template <typename Number> struct ElasticOperator<Number>::Cells
   {
-    MatrixFree<3, double> matrix_free;
+    MatrixFree<3, Number> matrix_free;
     IsotropicElasticity   elasticity{};
 
-    void integrate(ElasticEvaluation &phi) const { integrate_elastic_cell(phi, elasticity); }
+    void integrate(ElasticEvaluation<Number> &phi) const { integrate_elastic_cell(phi, elasticity); }
 
-    void apply(const MatrixFree<3, double> &, Vector &dst, const Vector &src,
+    void apply(const MatrixFree<3, Number> &, Vector &dst, const Vector &src,
                const std::pair<unsigned int, unsigned int> &range) const
     {
-      ElasticEvaluation phi(matrix_free);
+      ElasticEvaluation<Number> phi(matrix_free);
       for (unsigned int cell = range.first; cell < range.second; ++cell)
         {
           phi.reinit(cell);
@@ -41,47 +41,49 @@ namespace penny
     }
   };
 
-  ElasticOperator::ElasticOperator() : cells(std::make_unique<Cells>()) {}
+  template <typename Number> ElasticOperator<Number>::ElasticOperator() : cells(std::make_unique<Cells>()) {}
 
-  ElasticOperator::~ElasticOperator() = default;
+  template <typename Number> ElasticOperator<Number>::~ElasticOperator() = default;
 
-  void ElasticOperator::reinit(const Mapping<3> &mapping, const DoFHandler<3> &dof_handler,
-                               const AffineConstraints<double> &constraints,
-                               const IsotropicElasticity &elasticity, const unsigned int extra_points)
+  template <typename Number>
+  void ElasticOperator<Number>::reinit(const Mapping<3> &mapping, const DoFHandler<3> &dof_handler,
+                                       const AffineConstraints<Number> &constraints,
+                                       const IsotropicElasticity &elasticity, const unsigned int extra_points)
   {
     cells->elasticity = elasticity;
-    MatrixFree<3, double>::AdditionalData data;
-    data.tasks_parallel_scheme = MatrixFree<3, double>::AdditionalData::none; // MPI ranks, not threads
+    typename MatrixFree<3, Number>::AdditionalData data;
+    data.tasks_parallel_scheme = MatrixFree<3, Number>::AdditionalData::none; // MPI ranks, not threads
     data.mapping_update_flags  = update_gradients;
     cells->matrix_free.reinit(mapping, dof_handler, constraints,
                               QGauss<1>(dof_handler.get_fe().degree + extra_points), data);
   }
 
-  void ElasticOperator::initialize_dof_vector(Vector &v) const
+  template <typename Number> void ElasticOperator<Number>::initialize_dof_vector(Vector &v) const
   {
     cells->matrix_free.initialize_dof_vector(v);
   }
 
-  types::global_dof_index ElasticOperator::m() const
+  template <typename Number> types::global_dof_index ElasticOperator<Number>::m() const
   {
     return cells->matrix_free.get_dof_handler().n_dofs();
   }
 
-  double ElasticOperator::el(types::global_dof_index, types::global_dof_index) const
+  template <typename Number>
+  Number ElasticOperator<Number>::el(types::global_dof_index, types::global_dof_index) const
   {
     throw std::logic_error("a matrix-free operator has no entries to read");
   }
 
-  void ElasticOperator::vmult(Vector &dst, const Vector &src) const
+  template <typename Number> void ElasticOperator<Number>::vmult(Vector &dst, const Vector &src) const
   {
     cells->matrix_free.cell_loop(&Cells::apply, cells.get(), dst, src, true);
     for (const unsigned int i : cells->matrix_free.get_constrained_dofs())
       dst.local_element(i) = src.local_element(i);
   }
 
-  void ElasticOperator::compute_inverse_diagonal(Vector &inverse) const
+  template <typename Number> void ElasticOperator<Number>::compute_inverse_diagonal(Vector &inverse) const
   {
-    const MatrixFree<3, double> &matrix_free = cells->matrix_free;
+    const MatrixFree<3, Number> &matrix_free = cells->matrix_free;
     initialize_dof_vector(inverse);
     // Hanging nodes tie DoFs to others, whose diagonal is not the sum of
     // the cells': deal.II's unit-vector loop resolves them, more slowly.
@@ -95,7 +97,7 @@ namespace penny
     // makes the operator indefinite; CG cannot solve it.
     const unsigned int n_negative =
         Utilities::MPI::sum(static_cast<unsigned int>(std::count_if(inverse.begin(), inverse.end(),
-                                                                    [](double d) { return !(d > 0); })),
+                                                                    [](Number d) { return !(d > 0); })),
                             inverse.get_mpi_communicator());
     if (n_negative > 0)
       throw std::runtime_error(
@@ -103,12 +105,13 @@ namespace penny
           " operator has " + std::to_string(n_negative) +
           " diagonal entries <= 0: mapped cells are inverted at quadrature points, the stiffness is not "
           "positive definite (a mesh too slender for this aspect ratio)");
-    for (double &entry : inverse)
+    for (Number &entry : inverse)
       entry = 1 / entry;
   }
 
-  void ElasticOperator::assemble(TrilinosWrappers::SparseMatrix  &matrix,
-                                 const AffineConstraints<double> &constraints) const
+  template <typename Number>
+  void ElasticOperator<Number>::assemble(TrilinosWrappers::SparseMatrix  &matrix,
+                                         const AffineConstraints<Number> &constraints) const
   {
     const DoFHandler<3> &dof_handler  = cells->matrix_free.get_dof_handler();
     const MPI_Comm       communicator = dof_handler.get_communicator();
@@ -121,4 +124,7 @@ namespace penny
     matrix.reinit(dof_handler.locally_owned_dofs(), dof_handler.locally_owned_dofs(), pattern, communicator);
     MatrixFreeTools::compute_matrix(cells->matrix_free, constraints, matrix, &Cells::integrate, cells.get());
   }
+
+  template class ElasticOperator<double>;
+  template class ElasticOperator<float>;
 } // namespace penny

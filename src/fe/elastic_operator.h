@@ -20,25 +20,27 @@
 
 namespace penny
 {
-  class ElasticOperator : public dealii::Subscriptor
+  // Number: double for the system's operator, float for the multigrid's
+  // levels (half the bytes per cell and twice the cells per SIMD register).
+  template <typename Number> class ElasticOperator : public dealii::Subscriptor
   {
   public:
-    using value_type = double;
-    using Vector     = dealii::LinearAlgebra::distributed::Vector<double>;
+    using value_type = Number;
+    using Vector     = dealii::LinearAlgebra::distributed::Vector<Number>;
 
     ElasticOperator();
     ~ElasticOperator() override;
 
     // With degree + extra_points Gauss points per direction.
     void reinit(const dealii::Mapping<3> &mapping, const dealii::DoFHandler<3> &dof_handler,
-                const dealii::AffineConstraints<double> &constraints, const IsotropicElasticity &elasticity,
+                const dealii::AffineConstraints<Number> &constraints, const IsotropicElasticity &elasticity,
                 unsigned int extra_points);
 
     void                            initialize_dof_vector(Vector &v) const;
     dealii::types::global_dof_index m() const;
     // Chebyshev's interface names the entries, for a diagonal not given to
     // it; ours always is (compute_inverse_diagonal).
-    double el(dealii::types::global_dof_index, dealii::types::global_dof_index) const;
+    Number el(dealii::types::global_dof_index, dealii::types::global_dof_index) const;
 
     void vmult(Vector &dst, const Vector &src) const;
     void Tvmult(Vector &dst, const Vector &src) const { vmult(dst, src); }
@@ -49,7 +51,7 @@ namespace penny
 
     // The assembled matrix, for the coarsest degree's direct solve.
     void assemble(dealii::TrilinosWrappers::SparseMatrix  &matrix,
-                  const dealii::AffineConstraints<double> &constraints) const;
+                  const dealii::AffineConstraints<Number> &constraints) const;
 
   private:
     struct Cells;

@@ -22,10 +22,13 @@ namespace penny
 
   namespace
   {
-    using Vector = ElasticOperator::Vector;
+    // The system's operator and CG work in double; the multigrid, only a
+    // preconditioner, in float.
+    using Vector      = ElasticOperator<double>::Vector;
+    using LevelVector = ElasticOperator<float>::Vector;
 
     // The coarsest degree solved exactly: MUMPS' factors of its matrix.
-    class DirectCoarseSolve : public MGCoarseGridBase<Vector>
+    class DirectCoarseSolve : public MGCoarseGridBase<LevelVector>
     {
     public:
       explicit DirectCoarseSolve(const TrilinosWrappers::SparseMatrix &matrix)
@@ -34,9 +37,14 @@ namespace penny
         solver.initialize(matrix);
       }
 
-      void operator()(const unsigned int, Vector &dst, const Vector &src) const override
+      void operator()(const unsigned int, LevelVector &dst, const LevelVector &src) const override
       {
-        solver.solve(dst, src);
+        Vector x, b;
+        x.reinit(src.get_partitioner());
+        b.reinit(src.get_partitioner());
+        b.copy_locally_owned_data_from(src);
+        solver.solve(x, b);
+        dst.copy_locally_owned_data_from(x);
       }
 
     private:
@@ -44,8 +52,8 @@ namespace penny
       mutable TrilinosWrappers::SolverDirect solver;
     };
 
-    using Smoother = PreconditionChebyshev<ElasticOperator, Vector, DiagonalMatrix<Vector>>;
-    using Transfer = MGTransferGlobalCoarsening<3, Vector>;
+    using Smoother = PreconditionChebyshev<ElasticOperator<float>, LevelVector, DiagonalMatrix<LevelVector>>;
+    using Transfer = MGTransferGlobalCoarsening<3, LevelVector>;
 
     void copy(Vector &dst, const TrilinosWrappers::MPI::Vector &src)
     {
@@ -78,18 +86,18 @@ namespace penny
   // Level l carries the degree l + 1; `fine` is the system's operator.
   struct MatrixFreeElasticity::Hierarchy
   {
-    std::vector<std::unique_ptr<DoFHandler<3>>>               coarser_dofs;
-    std::vector<std::unique_ptr<AffineConstraints<double>>>   coarser_constraints;
-    ElasticOperator                                           fine;
-    MGLevelObject<ElasticOperator>                            operators;
-    MGLevelObject<MGTwoLevelTransfer<3, Vector>>              transfers;
-    std::unique_ptr<Transfer>                                 transfer;
-    TrilinosWrappers::SparseMatrix                            coarse_matrix;
-    std::unique_ptr<DirectCoarseSolve>                        coarse;
-    mg::Matrix<Vector>                                        level_matrices;
-    MGSmootherPrecondition<ElasticOperator, Smoother, Vector> smoother;
-    std::unique_ptr<Multigrid<Vector>>                        multigrid;
-    std::unique_ptr<PreconditionMG<3, Vector, Transfer>>      preconditioner;
+    std::vector<std::unique_ptr<DoFHandler<3>>>                           coarser_dofs;
+    MGLevelObject<AffineConstraints<float>>                               level_constraints;
+    ElasticOperator<double>                                               fine;
+    MGLevelObject<ElasticOperator<float>>                                 operators;
+    MGLevelObject<MGTwoLevelTransfer<3, LevelVector>>                     transfers;
+    std::unique_ptr<Transfer>                                             transfer;
+    TrilinosWrappers::SparseMatrix                                        coarse_matrix;
+    std::unique_ptr<DirectCoarseSolve>                                    coarse;
+    mg::Matrix<LevelVector>                                               level_matrices;
+    MGSmootherPrecondition<ElasticOperator<float>, Smoother, LevelVector> smoother;
+    std::unique_ptr<Multigrid<LevelVector>>                               multigrid;
+    std::unique_ptr<PreconditionMG<3, LevelVector, Transfer>>             preconditioner;
   };
 
   MatrixFreeElasticity::MatrixFreeElasticity(const DoFHandler<3>             &dof_handler,
@@ -98,20 +106,29 @@ namespace penny
                                              const IsotropicElasticity &elasticity)
       : hierarchy(std::make_unique<Hierarchy>())
   {
-    Hierarchy                                     &h   = *hierarchy;
-    const unsigned int                             top = dof_handler.get_fe().degree - 1;
-    std::vector<const DoFHandler<3> *>             dofs(top + 1, &dof_handler);
-    std::vector<const AffineConstraints<double> *> level_constraints(top + 1, &constraints);
+    Hierarchy &h = *hierarchy;
+    // Degrees p, p/2, ..., 1 (deal.II's bisect sequence), where p, p - 1, ...,
+    // 1 took fewer CG iterations but more time on more levels (b/a = 0.1 of
+    // the six-digit scene, 2 ranks: degree 4, 363 against 324 iterations,
+    // solve 91 s against 113 s; degree 6, 537 against 392, 380 s against
+    // 498 s; b/a = 0.5, degree 3, 132 against 126, 10.1 s against 11.1 s).
+    const std::vector<unsigned int> degrees =
+        MGTransferGlobalCoarseningTools::create_polynomial_coarsening_sequence(
+            dof_handler.get_fe().degree,
+            MGTransferGlobalCoarseningTools::PolynomialCoarseningSequenceType::bisect);
+    const unsigned int                 top = degrees.size() - 1;
+    std::vector<const DoFHandler<3> *> dofs(top + 1, &dof_handler);
+    h.level_constraints.resize(0, top);
+    h.level_constraints[top].copy_from(constraints);
     for (unsigned int level = 0; level < top; ++level)
       {
         auto coarser = std::make_unique<DoFHandler<3>>(dof_handler.get_triangulation());
-        coarser->distribute_dofs(FESystem<3>(FE_Q<3>(level + 1), 3));
-        auto coarser_constraints = std::make_unique<AffineConstraints<double>>();
-        constrain(*coarser, *coarser_constraints);
-        dofs[level]              = coarser.get();
-        level_constraints[level] = coarser_constraints.get();
+        coarser->distribute_dofs(FESystem<3>(FE_Q<3>(degrees[level]), 3));
+        AffineConstraints<double> coarser_constraints;
+        constrain(*coarser, coarser_constraints);
+        h.level_constraints[level].copy_from(coarser_constraints);
+        dofs[level] = coarser.get();
         h.coarser_dofs.push_back(std::move(coarser));
-        h.coarser_constraints.push_back(std::move(coarser_constraints));
       }
 
     h.operators.resize(0, top);
@@ -119,37 +136,38 @@ namespace penny
     MGLevelObject<Smoother::AdditionalData> smoothing(0, top);
     for (unsigned int level = 0; level <= top; ++level)
       {
-        h.operators[level].reinit(mapping, *dofs[level], *level_constraints[level], elasticity, level_points);
+        h.operators[level].reinit(mapping, *dofs[level], h.level_constraints[level], elasticity,
+                                  level_points);
         if (level > 0)
-          h.transfers[level].reinit(*dofs[level], *dofs[level - 1], *level_constraints[level],
-                                    *level_constraints[level - 1]);
+          h.transfers[level].reinit(*dofs[level], *dofs[level - 1], h.level_constraints[level],
+                                    h.level_constraints[level - 1]);
         // Chebyshev of degree 5, its upper bound from 20 CG steps (as deal.II's
         // matrix-free tutorials), on the upper 1/300 of the spectrum instead
-        // of their 1/20: a degree p - 1 space leaves more of the spectrum to
-        // the smoother than a coarser mesh does (elliptical-gap scene, 2 ranks:
-        // b/a = 0.5, degree 3, 126 against 170 CG iterations, solve 30 s
-        // against 40 s; b/a = 0.1, degree 4, 329 against 421, 295 s against
-        // 376 s; degree 2 unchanged; ranges 100 to 1000 and degrees 4 to 12
-        // gained no more).
+        // of their 1/20: a lower degree's space leaves more of the spectrum to
+        // the smoother than a coarser mesh does (elliptical-gap scene, 2 ranks,
+        // levels p, p - 1, ..., 1 in double: b/a = 0.5, degree 3, 126 against
+        // 170 CG iterations, solve 30 s against 40 s; b/a = 0.1, degree 4, 329
+        // against 421, 295 s against 376 s; degree 2 unchanged; ranges 100 to
+        // 1000 and degrees 4 to 12 gained no more).
         smoothing[level].smoothing_range     = 300;
         smoothing[level].degree              = 5;
         smoothing[level].eig_cg_n_iterations = 20;
-        smoothing[level].preconditioner      = std::make_shared<DiagonalMatrix<Vector>>();
+        smoothing[level].preconditioner      = std::make_shared<DiagonalMatrix<LevelVector>>();
         h.operators[level].compute_inverse_diagonal(smoothing[level].preconditioner->get_vector());
       }
     h.fine.reinit(mapping, dof_handler, constraints, elasticity, system_points);
-    h.transfer = std::make_unique<Transfer>(h.transfers, [&h](const unsigned int level, Vector &v) {
+    h.transfer = std::make_unique<Transfer>(h.transfers, [&h](const unsigned int level, LevelVector &v) {
       h.operators[level].initialize_dof_vector(v);
     });
 
-    h.operators[0].assemble(h.coarse_matrix, *level_constraints[0]);
+    h.operators[0].assemble(h.coarse_matrix, h.level_constraints[0]);
     h.coarse = std::make_unique<DirectCoarseSolve>(h.coarse_matrix);
     h.level_matrices.initialize(h.operators);
     h.smoother.initialize(h.operators, smoothing);
-    h.multigrid = std::make_unique<Multigrid<Vector>>(h.level_matrices, *h.coarse, *h.transfer, h.smoother,
-                                                      h.smoother, 0, top);
+    h.multigrid = std::make_unique<Multigrid<LevelVector>>(h.level_matrices, *h.coarse, *h.transfer,
+                                                           h.smoother, h.smoother, 0, top);
     h.preconditioner =
-        std::make_unique<PreconditionMG<3, Vector, Transfer>>(dof_handler, *h.multigrid, *h.transfer);
+        std::make_unique<PreconditionMG<3, LevelVector, Transfer>>(dof_handler, *h.multigrid, *h.transfer);
   }
 
   MatrixFreeElasticity::~MatrixFreeElasticity() = default;
@@ -157,8 +175,8 @@ namespace penny
   void MatrixFreeElasticity::vmult(TrilinosWrappers::MPI::Vector       &dst,
                                    const TrilinosWrappers::MPI::Vector &src) const
   {
-    const ElasticOperator &fine = hierarchy->fine;
-    Vector                 u, a_u;
+    const ElasticOperator<double> &fine = hierarchy->fine;
+    Vector                         u, a_u;
     fine.initialize_dof_vector(u);
     fine.initialize_dof_vector(a_u);
     copy(u, src);
@@ -169,8 +187,8 @@ namespace penny
   void MatrixFreeElasticity::solve(TrilinosWrappers::MPI::Vector &x, const TrilinosWrappers::MPI::Vector &b,
                                    SolverControl &control, const std::function<void(double)> &condition)
   {
-    const ElasticOperator &fine = hierarchy->fine;
-    Vector                 u, load;
+    const ElasticOperator<double> &fine = hierarchy->fine;
+    Vector                         u, load;
     fine.initialize_dof_vector(u);
     fine.initialize_dof_vector(load);
     copy(load, b);

@@ -2,11 +2,11 @@
 // sigma(u):e(v) dV evaluated cell by cell from the shape functions'
 // tensor-product structure (fe/elastic_operator.h), and
 // conjugate gradients preconditioned by one V-cycle of polynomial multigrid:
-// the same mesh with the degrees p, p - 1, ..., 1 (each evaluated with one
-// Gauss point per direction fewer than the system's operator), Chebyshev
-// smoothing with the operator's diagonal on each, and on degree 1 a sparse
-// direct solve (MUMPS) of the assembled matrix, which is small (one node per
-// vertex). The cost of an operator application grows like p^4 per cell
+// the same mesh with the degrees p, p/2, ..., 1 (each evaluated with one
+// Gauss point per direction fewer than the system's operator, in single
+// precision), Chebyshev smoothing with the operator's diagonal on each, and
+// on degree 1 a sparse direct solve (MUMPS) of the assembled matrix, which
+// is small (one node per vertex). The cost of an operator application grows like p^4 per cell
 // instead of the assembled matrix's p^6, and the memory is that of a few
 // vectors: what high degrees in 3D need.
 #pragma once
