@@ -81,8 +81,10 @@ namespace penny
     // would cost minutes per front point.
     // Per element of the collection: degree + 4 points per direction. The
     // fields at a cell's points come from FEEvaluation without MatrixFree:
-    // sum factorisation on the tensor-product points, which costs (p + 1)
-    // times less per point than FEValues' shape tables.
+    // sum factorisation on the tensor-product points instead of FEValues'
+    // tables of every shape function at every point (the phase 19.5 s ->
+    // 8.9 s on the default elliptical-gap scene, one rank; 99 s -> 31 s at
+    // b/a = 0.1, degree 4, two ranks).
     using CellEvaluation =
         FEEvaluation<dim, -1, 0, dim, double, VectorizedArray<double, 1>>; // one cell at a time
     const unsigned int subdivisions = dim == 3 ? 2 : 4;
