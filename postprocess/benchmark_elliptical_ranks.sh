@@ -5,8 +5,8 @@
 # matrix-free CG + p-multigrid (the same DoFs, just over a million),
 # tolerance 1e-10, no fields; then the wall time of each phase on both rank
 # counts, the speed-up, and how far K_I moved (postprocess/report_speed_up.py).
-# About 22 minutes and 13 GB (AMG) plus 14 minutes and 1.4 GB (matrix-free)
-# on the 2-core machine; run it idle.
+# About 18 minutes and 13 GB (AMG) plus 1.5 minutes and 1.4 GB (matrix-free)
+# on the 2-core machine (1159 s in the report of 2026-11-30); run it idle.
 # Usage, from anywhere: postprocess/benchmark_elliptical_ranks.sh [BUILD [OUT]]
 # (defaults: build, output/benchmark-elliptical-ranks, both from the repository root)
 set -euo pipefail

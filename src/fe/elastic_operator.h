@@ -49,7 +49,8 @@ namespace penny
     // Throws if a mapped cell is inverted at a quadrature point.
     void compute_inverse_diagonal(Vector &inverse) const;
 
-    // The assembled matrix, for the coarsest degree's direct solve.
+    // The assembled matrix, for the coarsest degree's direct solve (from the
+    // float operator, entries to single precision: a preconditioner's).
     void assemble(dealii::TrilinosWrappers::SparseMatrix  &matrix,
                   const dealii::AffineConstraints<Number> &constraints) const;
 
