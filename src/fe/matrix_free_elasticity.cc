@@ -33,17 +33,20 @@ namespace penny
     class DirectCoarseSolve : public MGCoarseGridBase<LevelVector>
     {
     public:
-      explicit DirectCoarseSolve(const TrilinosWrappers::SparseMatrix &matrix)
+      // `coarsest`: the level's operator, for the layout of its vectors.
+      DirectCoarseSolve(const TrilinosWrappers::SparseMatrix &matrix, const ElasticOperator<float> &coarsest)
           : solver(control, TrilinosWrappers::SolverDirect::AdditionalData(false, "Amesos_Mumps"))
       {
         solver.initialize(matrix);
+        LevelVector layout;
+        coarsest.initialize_dof_vector(layout);
+        x.reinit(layout.get_partitioner());
+        b.reinit(layout.get_partitioner());
       }
 
+      // MUMPS solves in double: the level vectors are copied in and out.
       void operator()(const unsigned int, LevelVector &dst, const LevelVector &src) const override
       {
-        Vector x, b;
-        x.reinit(src.get_partitioner());
-        b.reinit(src.get_partitioner());
         b.copy_locally_owned_data_from(src);
         solver.solve(x, b);
         dst.copy_locally_owned_data_from(x);
@@ -52,6 +55,7 @@ namespace penny
     private:
       SolverControl                          control;
       mutable TrilinosWrappers::SolverDirect solver;
+      mutable Vector                         x, b;
     };
 
     using Smoother = PreconditionChebyshev<ElasticOperator<float>, LevelVector, DiagonalMatrix<LevelVector>>;
@@ -164,7 +168,7 @@ namespace penny
     });
 
     h.operators[0].assemble(h.coarse_matrix, h.level_constraints[0]);
-    h.coarse = std::make_unique<DirectCoarseSolve>(h.coarse_matrix);
+    h.coarse = std::make_unique<DirectCoarseSolve>(h.coarse_matrix, h.operators[0]);
     h.level_matrices.initialize(h.operators);
     h.smoother.initialize(h.operators, smoothing);
     h.multigrid = std::make_unique<Multigrid<LevelVector>>(h.level_matrices, *h.coarse, *h.transfer,
