@@ -4,11 +4,13 @@
 // adhesionless gap (K_I = 0 at both ends of the front) and the adhesive
 // minimum (K_I = K_Ic at both ends, least P: psi), searched on 3D FE models
 // sampled at Chebyshev points in log(b/a) and interpolated between them, on
-// the discretisation of 'Elliptical model' and on one with half its cells
-// along and around the front (the error estimate), and on Galin's closed
-// form. The same sampling of the closed form measures the interpolation's
-// share of the error. PASS when b/a, the gap-area ratio and psi lie within
-// Verification/Tolerance of the closed form.
+// Galin's closed form, and on two discretisations: first one with half the
+// cells along and around the front of 'Elliptical model' (the coarse model,
+// for the error estimate), then 'Elliptical model' itself, sampled only from
+// just below the coarse model's slenderest gap. The same sampling of the
+// closed form measures the interpolation's share of the error. PASS when b/a,
+// the gap-area ratio and psi lie within Verification/Tolerance of the closed
+// form.
 #include "searches/elliptical_summits.h"
 #include "fracture/front_stress_intensity.h"
 #include "input/input_error.h"
@@ -27,7 +29,6 @@
 #include <cmath>
 #include <functional>
 #include <sstream>
-#include <tuple>
 
 namespace penny
 {
@@ -50,10 +51,11 @@ namespace penny
       std::vector<double>     tension_aspect_ratios; // Ay/Ax
       std::vector<double>     angles;                // front points
       std::vector<SummitGaps> fe, coarse_fe, exact;  // per Ay/Ax; coarse_fe: cells and sectors halved
-      std::vector<SummitGaps> sampled_exact;         // the closed form, sampled as the FE is
+      std::vector<SummitGaps> sampled_exact;         // the closed form, sampled as the fine FE is
       double                  largest_error;         // of b/a, the area ratio and psi, FE against exact
       double                  interpolation_error;   // the same, sampled closed form against exact
       double                  estimated_error;       // the same, FE against coarse FE: its estimate
+      double                  smallest_fine_shape;   // the fine models' smallest b/a sampled
       unsigned int            fe_models;
     };
 
@@ -61,10 +63,11 @@ namespace penny
 
     // The searches and the front of the gaps found, by one method: one call
     // of `sifs` per shape found, along the front from phi = 0 to pi/2.
-    SummitGaps summit_gaps(const EllipticalGapSifs &sifs, const double rho, const std::vector<double> &angles)
+    SummitGaps summit_gaps(const EllipticalGapSifs &sifs, const double rho, const std::vector<double> &angles,
+                           const double slenderest = 0)
     {
       SummitGaps   gaps;
-      const double s0     = adhesionless_summit_shape(sifs, rho);
+      const double s0     = adhesionless_summit_shape(sifs, rho, slenderest);
       const auto   front0 = sifs(s0, angles);
       gaps.adhesionless   = adhesionless_gap(s0, {{front0.front(), front0.back()}});
       const double s1     = adhesive_summit_shape(sifs, rho, s0);
@@ -182,14 +185,15 @@ namespace penny
             interval("[]", 0.05, 1),
             "Summits t = P (1 - x^2/Ax^2 - y^2/Ay^2) of principal radii R_1 = Ax^2/(2 P) and R_2 = "
             "Ay^2/(2 P); for each, the gaps are searched with and without adhesion. Every gap found is "
-            "rounder than its summit, so the FE models are sampled for b/a from the smallest Ay/Ax (at "
-            "most 0.5) to 1; slender summits need slender gap models (b/a about 0.14 for Ay/Ax = 0.1). "
-            "Units: none.");
+            "rounder than its summit, so the coarse FE models are sampled for b/a from the smallest Ay/Ax "
+            "(at most 0.5) to 1, the fine ones from 5 % below the coarse models' slenderest gap; slender "
+            "summits need slender gap models (b/a about 0.14 for Ay/Ax = 0.1). Units: none.");
         entries.integer(
             "Shapes sampled", shapes_sampled, 14u, 2u, 64u,
             "FE models (each solved for three unit loads) per discretisation, at Chebyshev points in "
-            "log(b/a) between the smallest Ay/Ax (at most 0.5) and 1; the searches run on their "
-            "interpolant. Its error falls geometrically with the samples: in b/a, the area ratio and psi "
+            "log(b/a) up to 1 (from the smallest Ay/Ax, at most 0.5, for the coarse models; from 5 % below "
+            "their slenderest gap for the fine ones); the searches run on their interpolant. Its error falls "
+            "geometrically with the samples: in b/a, the area ratio and psi "
             "within 1e-5 with 12 and 1e-7 with 14 from Ay/Ax = 0.1, 1e-6 with 16 from 0.05 (on the closed "
             "form); summary.csv reports it, measured by sampling the closed form as the FE is. Units: "
             "none.");
@@ -226,14 +230,15 @@ namespace penny
         // rounder) to the circle, a range even when every summit is round.
         const double smallest = std::min(
             0.5, *std::min_element(solved.tension_aspect_ratios.begin(), solved.tension_aspect_ratios.end()));
-        {
-          // Too few samples fail here, on the closed form, before any FE model.
-          TimerOutput::Scope   scope(timer, "closed form");
-          const SampledGapSifs sampled(galin_unit_load_sifs, smallest, shapes_sampled, solved.angles);
+        // The closed form's gaps, sampled as the FE is from `lowest` to the circle.
+        const auto sampled_closed_form = [&](const double lowest) {
+          TimerOutput::Scope      scope(timer, "closed form");
+          const SampledGapSifs    sampled(galin_unit_load_sifs, lowest, shapes_sampled, solved.angles);
+          std::vector<SummitGaps> gaps;
           for (const double ratio : solved.tension_aspect_ratios)
             try
               {
-                solved.sampled_exact.push_back(summit_gaps(sampled, ratio, solved.angles));
+                gaps.push_back(summit_gaps(sampled, ratio, solved.angles, lowest));
               }
             catch (const std::exception &error)
               {
@@ -242,55 +247,87 @@ namespace penny
                                  ": on the closed form sampled so, " + error.what() +
                                  "; allowed: [2, 64], 14 or more from Ay/Ax = 0.1, 16 from 0.05");
               }
-        }
+          return gaps;
+        };
+        // Too few samples fail here, on the closed form, before any FE model.
+        sampled_closed_form(smallest);
         // The largest model: the fine discretisation's slenderest shape (the
         // most rings around its front).
         EllipticalGapModelParameters slenderest = fine;
         slenderest.mesh.semi_axis_b             = smallest;
         check_elliptical_model_size(slenderest);
+
         Progress progress(log, "3D models");
-        for (const auto &[discretisation, name, gaps] :
-             {std::tuple{&fine, "FE", &solved.fe}, std::tuple{&coarse, "coarse FE", &solved.coarse_fe}})
-          {
-            EllipticalGapFamily family(*discretisation, model.front_weight, ring, timer);
-            family.observe([&, name = name](const double s) {
-              std::ostringstream state;
-              state << name << ": b/a = " << s << ", shape " << family.n_models() << " of " << shapes_sampled;
-              progress.step(state.str());
-            });
-            // A model that fails names its shape and discretisation (a solver's
-            // failure and bad input already name their settings).
-            const SampledGapSifs sampled(
-                [&, name = name](const double s, const std::vector<double> &angles) {
-                  try
-                    {
-                      return family.unit_load_sifs(s, angles);
-                    }
-                  catch (const SolverFailure &)
-                    {
-                      throw;
-                    }
-                  catch (const InputError &)
-                    {
-                      throw;
-                    }
-                  catch (const std::exception &error)
-                    {
-                      std::ostringstream what;
-                      what << "the " << name << " model of b/a = " << s << " ("
-                           << discretisation->mesh.cells_along_front << " cells along and "
-                           << discretisation->mesh.cells_around_front
-                           << " around the front) failed: " << error.what()
-                           << "; the mesh may be too coarse for so slender a gap (Elliptical model/"
-                              "Cells along front and Sectors around front; the coarse model halves both)";
-                      throw std::runtime_error(what.str());
-                    }
-                },
-                smallest, shapes_sampled, solved.angles);
-            for (const double ratio : solved.tension_aspect_ratios)
-              gaps->push_back(summit_gaps(sampled, ratio, solved.angles));
-            solved.fe_models += family.n_models();
-          }
+        // The FE models of a discretisation, sampled from `lowest` to the circle.
+        const auto sampled_family = [&](const EllipticalGapModelParameters &discretisation,
+                                        const std::string &name, const double lowest) {
+          EllipticalGapFamily family(discretisation, model.front_weight, ring, timer);
+          family.observe([&](const double s) {
+            std::ostringstream state;
+            state << name << ": b/a = " << s << ", shape " << family.n_models() << " of " << shapes_sampled;
+            progress.step(state.str());
+          });
+          // A model that fails names its shape and discretisation (a solver's
+          // failure and bad input already name their settings).
+          const SampledGapSifs sampled(
+              [&](const double s, const std::vector<double> &angles) {
+                try
+                  {
+                    return family.unit_load_sifs(s, angles);
+                  }
+                catch (const SolverFailure &)
+                  {
+                    throw;
+                  }
+                catch (const InputError &)
+                  {
+                    throw;
+                  }
+                catch (const std::exception &error)
+                  {
+                    std::ostringstream what;
+                    what << "the " << name << " model of b/a = " << s << " ("
+                         << discretisation.mesh.cells_along_front << " cells along and "
+                         << discretisation.mesh.cells_around_front
+                         << " around the front) failed: " << error.what()
+                         << "; the mesh may be too coarse for so slender a gap (Elliptical model/"
+                            "Cells along front and Sectors around front; the coarse model halves both)";
+                    throw std::runtime_error(what.str());
+                  }
+              },
+              lowest, shapes_sampled, solved.angles);
+          solved.fe_models += family.n_models();
+          return sampled;
+        };
+
+        // The coarse models first: their gaps show which shapes the fine
+        // models need. Those sample from 5 % below the coarse model's
+        // slenderest gap (the two discretisations' gaps differ by far less),
+        // sparing the slender shapes where the Chebyshev points crowd and CG
+        // takes longest.
+        const SampledGapSifs coarse_sifs = sampled_family(coarse, "coarse FE", smallest);
+        for (const double ratio : solved.tension_aspect_ratios)
+          solved.coarse_fe.push_back(summit_gaps(coarse_sifs, ratio, solved.angles, smallest));
+        double slenderest_gap = 1;
+        for (const auto &gaps : solved.coarse_fe)
+          slenderest_gap = std::min(slenderest_gap, gaps.adhesionless.aspect_ratio);
+        solved.smallest_fine_shape     = std::max(smallest, 0.95 * slenderest_gap);
+        const SampledGapSifs fine_sifs = sampled_family(fine, "FE", solved.smallest_fine_shape);
+        for (const double ratio : solved.tension_aspect_ratios)
+          try
+            {
+              solved.fe.push_back(summit_gaps(fine_sifs, ratio, solved.angles, solved.smallest_fine_shape));
+            }
+          catch (const std::runtime_error &error)
+            {
+              throw std::runtime_error(
+                  "the FE search for Ay/Ax = " + shortest(ratio) +
+                  " failed on b/a >= " + shortest(solved.smallest_fine_shape) +
+                  " (5 % below the coarse model's slenderest gap): " + error.what() +
+                  "; the coarse model (half the cells along and around the front) may be "
+                  "too coarse (Elliptical model/Cells along front and Sectors around front)");
+            }
+        solved.sampled_exact = sampled_closed_form(solved.smallest_fine_shape);
 
         const auto adhesionless = [](const auto member) {
           return [member](const SummitGaps &g) { return g.adhesionless.*member; };
@@ -321,7 +358,9 @@ namespace penny
         Table summary              = Table::summary();
         summary.add_row({"3D models solved (3 loads each)", solved.fe_models});
         summary.add_row({"shapes sampled per discretisation", shapes_sampled});
-        summary.add_row({"smallest b/a sampled", smallest});
+        summary.add_row({"smallest b/a sampled, coarse FE", smallest});
+        summary.add_row({"smallest b/a sampled, FE (5 % below the coarse FE's slenderest gap)",
+                         solved.smallest_fine_shape});
         summary.add_row({"MPI ranks", Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)});
         summary.add_row({"largest relative error of b/a, the area ratio and psi",
                          Table::Cell(solved.largest_error, Table::error_digits)});

@@ -42,7 +42,8 @@ namespace penny
 
   SampledGapSifs::SampledGapSifs(const EllipticalGapSifs &sifs, const double smallest_aspect_ratio,
                                  const unsigned int samples, const std::vector<double> &angles)
-      : log_aspect_ratios(std::log(smallest_aspect_ratio), 0, samples), angles(angles)
+      : smallest_aspect_ratio(smallest_aspect_ratio),
+        log_aspect_ratios(std::log(smallest_aspect_ratio), 0, samples), angles(angles)
   {
     for (const double log_s : log_aspect_ratios.nodes())
       this->samples.push_back(sifs(std::exp(log_s), angles));
@@ -121,23 +122,24 @@ namespace penny
     return tension * std::sqrt(a) * K.uniform - std::pow(a, 2.5) * (rho * K.xx + K.yy / rho) / 2;
   }
 
-  double adhesionless_summit_shape(const EllipticalGapSifs &sifs, const double rho)
+  double adhesionless_summit_shape(const EllipticalGapSifs &sifs, const double rho, const double slenderest)
   {
     if (rho == 1)
       return 1;
-    // Ay/Ax - rho is 1 - rho > 0 at s = 1 (the circle); halve s until it turns negative.
+    // Ay/Ax - rho is 1 - rho > 0 at s = 1 (the circle); from s = rho (every
+    // gap is rounder than its summit), halve s until it turns negative.
     const auto excess = [&](const double s) {
       return adhesionless_gap(s, front_ends(sifs, s)).tension_aspect_ratio - rho;
     };
-    double hi = 1, excess_hi = 1 - rho, lo = rho, excess_lo = excess(lo);
+    double hi = 1, excess_hi = 1 - rho, lo = std::max(rho, slenderest), excess_lo = excess(lo);
     for (unsigned int k = 0; excess_lo >= 0; ++k, excess_lo = excess(lo))
       {
-        if (k == 6)
+        if (k == 6 || lo == slenderest)
           throw std::runtime_error("elliptical summit: no gap down to b/a = " + std::to_string(lo) +
                                    " for Ay/Ax = " + std::to_string(rho));
         hi        = lo;
         excess_hi = excess_lo;
-        lo /= 2;
+        lo        = std::max(lo / 2, slenderest);
       }
     return bracketed_root(excess, lo, hi, excess_lo, excess_hi, shape_bits);
   }

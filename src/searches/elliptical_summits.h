@@ -53,7 +53,10 @@ namespace penny
     // At `angles`, each one of the sampled angles; s in [smallest, 1].
     std::vector<EllipticalUnitLoadSifs> operator()(double s, const std::vector<double> &angles) const;
 
+    double smallest() const { return smallest_aspect_ratio; }
+
   private:
+    double                                           smallest_aspect_ratio;
     ChebyshevPoints                                  log_aspect_ratios;
     std::vector<double>                              angles;
     std::vector<std::vector<EllipticalUnitLoadSifs>> samples; // [point][angle]
@@ -100,8 +103,10 @@ namespace penny
   // the minimum over s of P. The adhesive gaps of a summit lie between its
   // adhesionless shape s_0 (where a grows without bound) and the circle
   // (where a shrinks to 0), so the minimum is sought on (s_0, 1). The circle
-  // Ay/Ax = 1 is s = 1 by symmetry.
-  double adhesionless_summit_shape(const EllipticalGapSifs &sifs, double tension_aspect_ratio);
+  // Ay/Ax = 1 is s = 1 by symmetry. `slenderest`: the smallest s that `sifs`
+  // answers (a sampled family's lower end; 0: any s > 0).
+  double adhesionless_summit_shape(const EllipticalGapSifs &sifs, double tension_aspect_ratio,
+                                   double slenderest = 0);
   double adhesive_summit_shape(const EllipticalGapSifs &sifs, double tension_aspect_ratio,
                                double adhesionless_aspect_ratio);
 } // namespace penny
