@@ -194,8 +194,9 @@ namespace penny
             "log(b/a) up to 1 (from the smallest Ay/Ax, at most 0.5, for the coarse models; from 5 % below "
             "their slenderest gap for the fine ones); the searches run on their interpolant. Its error falls "
             "geometrically with the samples: in b/a, the area ratio and psi "
-            "within 1e-5 with 12 and 1e-7 with 14 from Ay/Ax = 0.1, 1e-6 with 16 from 0.05 (on the closed "
-            "form); summary.csv reports it, measured by sampling the closed form as the FE is. Units: "
+            "within 1e-5 with 12 and 1e-7 with 14 from Ay/Ax = 0.1, 1e-6 with 16 from 0.05, 5e-8 with 12 "
+            "from b/a = 0.13 (on the closed form); summary.csv reports it, measured by sampling the closed "
+            "form as the FE is. Units: "
             "none.");
         entries.integer(
             "Front points", front_points, 9u, 2u, 1000u,

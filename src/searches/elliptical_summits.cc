@@ -42,8 +42,7 @@ namespace penny
 
   SampledGapSifs::SampledGapSifs(const EllipticalGapSifs &sifs, const double smallest_aspect_ratio,
                                  const unsigned int samples, const std::vector<double> &angles)
-      : smallest_aspect_ratio(smallest_aspect_ratio),
-        log_aspect_ratios(std::log(smallest_aspect_ratio), 0, samples), angles(angles)
+      : log_aspect_ratios(std::log(smallest_aspect_ratio), 0, samples), angles(angles)
   {
     for (const double log_s : log_aspect_ratios.nodes())
       this->samples.push_back(sifs(std::exp(log_s), angles));

@@ -53,10 +53,7 @@ namespace penny
     // At `angles`, each one of the sampled angles; s in [smallest, 1].
     std::vector<EllipticalUnitLoadSifs> operator()(double s, const std::vector<double> &angles) const;
 
-    double smallest() const { return smallest_aspect_ratio; }
-
   private:
-    double                                           smallest_aspect_ratio;
     ChebyshevPoints                                  log_aspect_ratios;
     std::vector<double>                              angles;
     std::vector<std::vector<EllipticalUnitLoadSifs>> samples; // [point][angle]
