@@ -231,23 +231,35 @@ namespace penny
         // rounder) to the circle, a range even when every summit is round.
         const double smallest = std::min(
             0.5, *std::min_element(solved.tension_aspect_ratios.begin(), solved.tension_aspect_ratios.end()));
-        // The closed form's gaps, sampled as the FE is from `lowest` to the circle.
+        // The closed form's gaps, sampled as the FE is from `lowest` to the
+        // circle. Too few samples, where the search fails or the
+        // interpolation alone misses Verification/Tolerance, are bad input.
         const auto sampled_closed_form = [&](const double lowest) {
           TimerOutput::Scope      scope(timer, "closed form");
           const SampledGapSifs    sampled(galin_unit_load_sifs, lowest, shapes_sampled, solved.angles);
           std::vector<SummitGaps> gaps;
-          for (const double ratio : solved.tension_aspect_ratios)
-            try
-              {
-                gaps.push_back(summit_gaps(sampled, ratio, solved.angles, lowest));
-              }
-            catch (const std::exception &error)
-              {
+          for (unsigned int k = 0; k < solved.tension_aspect_ratios.size(); ++k)
+            {
+              const double ratio = solved.tension_aspect_ratios[k];
+              std::string  failure;
+              try
+                {
+                  gaps.push_back(summit_gaps(sampled, ratio, solved.angles, lowest));
+                  const double error = largest_relative_error({gaps.back()}, {solved.exact[k]});
+                  if (!(error <= tolerance))
+                    failure = "b/a, the area ratio or psi is off by " + shortest(error) +
+                              ", more than Verification/Tolerance = " + shortest(tolerance);
+                }
+              catch (const std::exception &error)
+                {
+                  failure = error.what();
+                }
+              if (!failure.empty())
                 throw InputError("Elliptical summits/Shapes sampled = " + std::to_string(shapes_sampled) +
                                  " is too few for Ay/Ax = " + shortest(ratio) +
-                                 ": on the closed form sampled so, " + error.what() +
+                                 ": on the closed form sampled so, " + failure +
                                  "; allowed: [2, 64], 14 or more from Ay/Ax = 0.1, 16 from 0.05");
-              }
+            }
           return gaps;
         };
         // Too few samples fail here, on the closed form, before any FE model.
