@@ -556,9 +556,10 @@ BOOST_AUTO_TEST_CASE(summit_searches_on_a_family_sampled_from_above_the_summit)
 // and Ay/Ax = 0.5.
 BOOST_AUTO_TEST_CASE(summit_searches_on_fe_models)
 {
-  dealii::TimerOutput   timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
-  const EllipticalModel model = test_size(8, {0.2});
-  EllipticalGapFamily family(model.with_semi_axes(1, 1), model.front_weight, model.ring_radii.back(), timer);
+  dealii::TimerOutput     timer(std::cout, dealii::TimerOutput::never, dealii::TimerOutput::wall_times);
+  const EllipticalModel   model = test_size(8, {0.2});
+  EllipticalGapFamily     family(model.with_semi_axes(1, 1), model.front_weight, model.ring_radii.back(), 0.5,
+                                 timer);
   const EllipticalGapSifs fe = SampledGapSifs(
       [&family](const double s, const std::vector<double> &angles) {
         return family.unit_load_sifs(s, angles);

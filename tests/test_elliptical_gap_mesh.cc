@@ -389,6 +389,32 @@ BOOST_AUTO_TEST_CASE(geometric_rings)
     }
 }
 
+// A gap counted as a slenderer one keeps its own innermost rings but has as
+// many rings, and as many cells, as that one: a family of gaps meshed so has
+// one mesh whose vertices move with b/a (its own counts differ).
+BOOST_AUTO_TEST_CASE(gaps_counted_alike_share_their_cells)
+{
+  EllipticalGapMeshParameters slenderest;
+  slenderest.semi_axis_b     = 0.13;
+  slenderest.front_cell_size = 1e-4;
+  slenderest.ring_ratio      = 2;
+  for (const double b_over_a : {0.3, 0.6, 1.})
+    BOOST_TEST_CONTEXT("b/a = " << b_over_a)
+    {
+      EllipticalGapMeshParameters own     = slenderest;
+      own.semi_axis_b                     = b_over_a;
+      EllipticalGapMeshParameters counted = own;
+      counted.counts_aspect_ratio         = slenderest.semi_axis_b;
+      const auto rings = front_ring_radii(counted), own_rings = front_ring_radii(own);
+      BOOST_TEST(rings[0].size() == front_ring_radii(slenderest)[0].size());
+      BOOST_TEST(own_rings[0].size() < rings[0].size());
+      for (unsigned int e = 0; e < rings.size(); ++e)
+        BOOST_TEST(rings[e][0] == own_rings[e][0]);
+      BOOST_TEST(elliptical_gap_mesh_cells(counted) == elliptical_gap_mesh_cells(slenderest));
+      BOOST_TEST(elliptical_gap_mesh_cells(own) < elliptical_gap_mesh_cells(slenderest));
+    }
+}
+
 BOOST_AUTO_TEST_CASE(bad_parameters_are_rejected)
 {
   EllipticalGapMeshParameters p = small_elliptical_mesh(0.5);
@@ -397,6 +423,9 @@ BOOST_AUTO_TEST_CASE(bad_parameters_are_rejected)
   BOOST_CHECK_THROW(make_elliptical_gap_mesh(triangulation, p), std::invalid_argument);
   p             = small_elliptical_mesh(0.5);
   p.semi_axis_b = 3;
+  BOOST_CHECK_THROW(make_elliptical_gap_mesh(triangulation, p), std::invalid_argument);
+  p                     = small_elliptical_mesh(0.5);
+  p.counts_aspect_ratio = 1.5;
   BOOST_CHECK_THROW(make_elliptical_gap_mesh(triangulation, p), std::invalid_argument);
 }
 

@@ -174,6 +174,23 @@ namespace penny
         throw std::invalid_argument("make_elliptical_gap_mesh: " + message);
     }
 
+    // The box in the reference space: R x R a/b x H sqrt(a/b).
+    Tensor<1, 3> reference_box(const EllipticalGapMeshParameters &p)
+    {
+      return Tensor<1, 3>({p.domain_width, p.domain_width * p.semi_axis_a / p.semi_axis_b,
+                           p.domain_height * std::sqrt(p.semi_axis_a / p.semi_axis_b)});
+    }
+
+    // The gap whose rings and outer shells the mesh counts: p's own, or the
+    // one of b/a = counts_aspect_ratio.
+    EllipticalGapMeshParameters counted(const EllipticalGapMeshParameters &p)
+    {
+      EllipticalGapMeshParameters gap = p;
+      if (p.counts_aspect_ratio > 0)
+        gap.semi_axis_b = p.counts_aspect_ratio * p.semi_axis_a;
+      return gap;
+    }
+
     // Cos and sin of i pi/n, exact where they are 0 or +-1, so that vertices on
     // the planes x = 0, y = 0, z = 0 lie on them exactly.
     std::array<double, 2> cos_sin(const unsigned int i, const unsigned int n)
@@ -200,9 +217,8 @@ namespace penny
           : scale({p.semi_axis_a, p.semi_axis_b, std::sqrt(p.semi_axis_a * p.semi_axis_b)}),
             m(p.cells_along_front / 2), sectors(p.cells_around_front), tube_rows(sectors / 4),
             upper_rows(std::max(1L, std::lround(0.3 / radial_angle(m)))), rows(tube_rows + upper_rows),
-            rings(front_ring_radii(p)), box({p.domain_width, p.domain_width * p.semi_axis_a / p.semi_axis_b,
-                                             p.domain_height * p.semi_axis_a / scale[2]}),
-            front(p.semi_axis_a, p.semi_axis_b), turn(p.semi_axis_a, p.semi_axis_b)
+            rings(front_ring_radii(p)), box(reference_box(p)), front(p.semi_axis_a, p.semi_axis_b),
+            turn(p.semi_axis_a, p.semi_axis_b)
       {
         const double angle   = radial_angle(m);
         const double inner_g = std::exp(inner_shell_aspect * angle);
@@ -222,7 +238,8 @@ namespace penny
             const auto [c, s]     = cos_sin(3 * sectors / 4 - q, sectors);
             radii[tube_inner + q] = 1 + w * c / s;
           }
-        const double mean_box = std::cbrt(box[0] * box[1] * box[2]);
+        const Tensor<1, 3> counted_box = reference_box(counted(p));
+        const double       mean_box    = std::cbrt(counted_box[0] * counted_box[1] * counted_box[2]);
         n_shells = tube_outer + std::max(1L, std::lround(std::log(mean_box / (1 + w)) / std::log(outer_g)));
         core     = radii[1] / (std::sqrt(3.) * inner_g);
       }
@@ -396,6 +413,28 @@ namespace penny
     }
   } // namespace
 
+  namespace
+  {
+    // The innermost ring radius of each column (see front_ring_radii).
+    std::vector<double> innermost_ring_radii(const EllipticalGapMeshParameters &p)
+    {
+      const unsigned int    columns = p.cells_along_front + 1;
+      const EllipticalFront front(p.semi_axis_a, p.semi_axis_b);
+      std::vector<double>   innermost(columns);
+      for (unsigned int e = 0; e < columns; ++e)
+        {
+          const double phi = front.parametric_angle(e * M_PI / (2 * p.cells_along_front));
+          innermost[e]     = p.front_cell_size * std::min(p.semi_axis_b, 1 / front.curvature(phi)) /
+                         front.tangent_distance(phi);
+        }
+      for (unsigned int e = 1; e < columns; ++e)
+        innermost[e] = std::min(innermost[e], p.ring_ratio * innermost[e - 1]);
+      for (unsigned int e = columns - 1; e-- > 0;)
+        innermost[e] = std::min(innermost[e], p.ring_ratio * innermost[e + 1]);
+      return innermost;
+    }
+  } // namespace
+
   // Rings of each column e = 0 ... cells_along_front (front coordinate
   // e pi/(2 cells_along_front), parametric angle phi_e) in the reference meridian plane,
   // geometric from the innermost to the tube boundary. The
@@ -404,31 +443,18 @@ namespace penny
   // unit of r), but at most ring_ratio times that of a neighbouring column,
   // so that a ring never jumps by more than one ring's growth from one column
   // to the next. Every column has as many rings as the nominal ratio needs
-  // on the widest span.
+  // on the widest span of the counted gap.
   std::vector<std::vector<double>> front_ring_radii(const EllipticalGapMeshParameters &p)
   {
     check(p.front_cell_size > 0 && p.front_cell_size < tube_half_width / 1.2,
           "front_cell_size must lie in (0, " + std::to_string(tube_half_width / 1.2) + ")");
     check(p.ring_ratio > 1, "ring_ratio must exceed 1");
-    const double          a = p.semi_axis_a, b = p.semi_axis_b;
-    const unsigned int    columns = p.cells_along_front + 1;
-    const EllipticalFront front(a, b);
-    std::vector<double>   innermost(columns);
-    for (unsigned int e = 0; e < columns; ++e)
-      {
-        const double phi = front.parametric_angle(e * M_PI / (2 * p.cells_along_front));
-        innermost[e] =
-            p.front_cell_size * std::min(b, 1 / front.curvature(phi)) / front.tangent_distance(phi);
-      }
-    for (unsigned int e = 1; e < columns; ++e)
-      innermost[e] = std::min(innermost[e], p.ring_ratio * innermost[e - 1]);
-    for (unsigned int e = columns - 1; e-- > 0;)
-      innermost[e] = std::min(innermost[e], p.ring_ratio * innermost[e + 1]);
-
-    const double smallest = *std::min_element(innermost.begin(), innermost.end());
+    const std::vector<double> innermost         = innermost_ring_radii(p);
+    const std::vector<double> counted_innermost = innermost_ring_radii(counted(p));
+    const double smallest = *std::min_element(counted_innermost.begin(), counted_innermost.end());
     const long   n = std::max(1L, std::lround(std::log(tube_half_width / smallest) / std::log(p.ring_ratio)));
-    std::vector<std::vector<double>> radii(columns, std::vector<double>(n + 1));
-    for (unsigned int e = 0; e < columns; ++e)
+    std::vector<std::vector<double>> radii(innermost.size(), std::vector<double>(n + 1));
+    for (unsigned int e = 0; e < innermost.size(); ++e)
       for (long k = 0; k <= n; ++k)
         radii[e][k] =
             k == n ? tube_half_width : innermost[e] * std::pow(tube_half_width / innermost[e], double(k) / n);
@@ -442,6 +468,9 @@ namespace penny
       check(p.semi_axis_b >= smallest_aspect_ratio * p.semi_axis_a && p.semi_axis_a >= p.semi_axis_b,
             "the semi-axes must satisfy a >= b >= smallest_aspect_ratio a");
       check(p.outer_shell_aspect > 0, "outer_shell_aspect must be positive");
+      check(p.counts_aspect_ratio == 0 ||
+                (p.counts_aspect_ratio >= smallest_aspect_ratio && p.counts_aspect_ratio <= 1),
+            "counts_aspect_ratio must be 0 or lie in [smallest_aspect_ratio, 1]");
       check(p.domain_width <= largest_box && p.domain_height <= largest_box,
             "the box must reach at most largest_box a along x, y and z");
       check(p.cells_along_front >= 2 && p.cells_along_front % 2 == 0,

@@ -50,7 +50,8 @@
 // Rings. The innermost ring has the physical radius `front_cell_size` x
 // min(b, radius of curvature of the front) (b at phi = pi/2, b^2/a at
 // phi = 0), but grows by at most `ring_ratio` from one column to the next;
-// every column has the same number of rings.
+// every column has the same number of rings: as many as `ring_ratio` needs
+// on the gap itself or on the one of b/a = `counts_aspect_ratio`.
 //
 // Angles: the front point at parametric angle phi is (a cos phi, b sin phi, 0).
 #pragma once
@@ -79,6 +80,9 @@ namespace penny
     double       outer_shell_aspect = 3;    // radial thickness / angular width of the shells beyond the tube
     double       ring_ratio         = 1.6;  // nominal ratio of successive ring radii (the rings fill
                                             // the tube exactly, so the ratio used is close to it)
+    double counts_aspect_ratio = 0;         // the rings and outer shells are as many as the gap of this b/a
+                                            // needs (0: this gap's b/a), so that the mesh of a family of gaps
+                                            // counted alike moves with b/a instead of changing in steps
   };
 
   // The slenderest gap b/a the mesh is built for: below it the cells around

@@ -232,38 +232,37 @@ namespace penny
         const double smallest = std::min(
             0.5, *std::min_element(solved.tension_aspect_ratios.begin(), solved.tension_aspect_ratios.end()));
         // The closed form's gaps, sampled as the FE is from `lowest` to the
-        // circle. Too few samples, where the search fails or the
-        // interpolation alone misses Verification/Tolerance, are bad input.
-        const auto sampled_closed_form = [&](const double lowest) {
-          TimerOutput::Scope      scope(timer, "closed form");
-          const SampledGapSifs    sampled(galin_unit_load_sifs, lowest, shapes_sampled, solved.angles);
-          std::vector<SummitGaps> gaps;
-          for (unsigned int k = 0; k < solved.tension_aspect_ratios.size(); ++k)
-            {
-              const double ratio = solved.tension_aspect_ratios[k];
-              std::string  failure;
-              try
-                {
-                  gaps.push_back(summit_gaps(sampled, ratio, solved.angles, lowest));
-                  const double error = largest_relative_error({gaps.back()}, {solved.exact[k]});
-                  if (!(error <= tolerance))
-                    failure = "b/a, the area ratio or psi is off by " + shortest(error) +
-                              ", more than Verification/Tolerance = " + shortest(tolerance);
-                }
-              catch (const std::exception &error)
-                {
-                  failure = error.what();
-                }
-              if (!failure.empty())
-                throw InputError("Elliptical summits/Shapes sampled = " + std::to_string(shapes_sampled) +
-                                 " is too few for Ay/Ax = " + shortest(ratio) +
-                                 ": on the closed form sampled so, " + failure +
-                                 "; allowed: [2, 64], 14 or more from Ay/Ax = 0.1, 16 from 0.05");
-            }
-          return gaps;
+        // circle.
+        const auto sampled_closed_form = [&](const double lowest, const double ratio) {
+          TimerOutput::Scope   scope(timer, "closed form");
+          const SampledGapSifs sampled(galin_unit_load_sifs, lowest, shapes_sampled, solved.angles);
+          return summit_gaps(sampled, ratio, solved.angles, lowest);
         };
-        // Too few samples fail here, on the closed form, before any FE model.
-        sampled_closed_form(smallest);
+        // Too few samples, where the search fails or the interpolation alone
+        // misses Verification/Tolerance, are bad input: found here, on the
+        // closed form, before any FE model.
+        for (unsigned int k = 0; k < solved.tension_aspect_ratios.size(); ++k)
+          {
+            const double ratio = solved.tension_aspect_ratios[k];
+            std::string  failure;
+            try
+              {
+                const double error =
+                    largest_relative_error({sampled_closed_form(smallest, ratio)}, {solved.exact[k]});
+                if (!(error <= tolerance))
+                  failure = "b/a, the area ratio or psi is off by " + Table::label(error, 3) +
+                            ", more than Verification/Tolerance = " + shortest(tolerance);
+              }
+            catch (const std::exception &error)
+              {
+                failure = error.what();
+              }
+            if (!failure.empty())
+              throw InputError("Elliptical summits/Shapes sampled = " + std::to_string(shapes_sampled) +
+                               " is too few for Ay/Ax = " + shortest(ratio) +
+                               ": on the closed form sampled so, " + failure +
+                               "; allowed: [2, 64], 14 or more from Ay/Ax = 0.1, 16 from 0.05");
+          }
         // The largest model: the fine discretisation's slenderest shape (the
         // most rings around its front).
         EllipticalGapModelParameters slenderest = fine;
@@ -274,7 +273,7 @@ namespace penny
         // The FE models of a discretisation, sampled from `lowest` to the circle.
         const auto sampled_family = [&](const EllipticalGapModelParameters &discretisation,
                                         const std::string &name, const double lowest) {
-          EllipticalGapFamily family(discretisation, model.front_weight, ring, timer);
+          EllipticalGapFamily family(discretisation, model.front_weight, ring, lowest, timer);
           family.observe([&](const double s) {
             std::ostringstream state;
             state << name << ": b/a = " << s << ", shape " << family.n_models() << " of " << shapes_sampled;
@@ -340,7 +339,8 @@ namespace penny
                   "; the coarse model (half the cells along and around the front) may be "
                   "too coarse (Elliptical model/Cells along front and Sectors around front)");
             }
-        solved.sampled_exact = sampled_closed_form(solved.smallest_fine_shape);
+        for (const double ratio : solved.tension_aspect_ratios)
+          solved.sampled_exact.push_back(sampled_closed_form(solved.smallest_fine_shape, ratio));
 
         const auto adhesionless = [](const auto member) {
           return [member](const SummitGaps &g) { return g.adhesionless.*member; };

@@ -6,10 +6,20 @@ namespace penny
 {
   using namespace dealii;
 
+  namespace
+  {
+    // `model` with the rings and outer shells of the gap of b/a = `slenderest`.
+    EllipticalGapModelParameters counted_alike(EllipticalGapModelParameters model, const double slenderest)
+    {
+      model.mesh.counts_aspect_ratio = slenderest;
+      return model;
+    }
+  } // namespace
+
   EllipticalGapFamily::EllipticalGapFamily(const EllipticalGapModelParameters &model,
                                            const FrontWeight &weight, const double ring_radius,
-                                           TimerOutput &timer)
-      : model(model), weight(weight), ring_radius(ring_radius), timer(timer)
+                                           const double slenderest, TimerOutput &timer)
+      : model(counted_alike(model, slenderest)), weight(weight), ring_radius(ring_radius), timer(timer)
   {
   }
 

@@ -21,9 +21,12 @@ namespace penny
   public:
     // `model`: the discretisation (its semi-axes are replaced); the front
     // J-integrals have the front weight and the ring radius (in units of
-    // b^2/a) of fracture/front_stress_intensity.h.
+    // b^2/a) of fracture/front_stress_intensity.h. Every model has as many
+    // rings and outer shells as the slenderest shape sampled, b/a =
+    // `slenderest`, needs: the mesh moves with b/a instead of changing in
+    // steps, so that K_I is a smooth function of b/a.
     EllipticalGapFamily(const EllipticalGapModelParameters &model, const FrontWeight &weight,
-                        double ring_radius, dealii::TimerOutput &timer);
+                        double ring_radius, double slenderest, dealii::TimerOutput &timer);
 
     // Signed K_I of the unit tractions at `angles` on the gap a = 1 m, b = s,
     // each with the unit pressure as reference.
