@@ -2,7 +2,7 @@
 # Usage: check_scene_list.sh PENNY TESTS/SCENES
 # Every registered scene has a test-size parameter file of its own name that
 # selects it, so that adding a scene adds its test (each file there is run by
-# check_scene.sh).
+# check_scene.sh, or check_stability.sh where it has an .expect file).
 set -u
 penny=$1 folder=$2
 scenes=$("$penny" --help | sed -n '/Scenes:$/,$p' | awk 'NR > 1 {print $1}')

@@ -1,4 +1,7 @@
-// One main for every Boost.Test module: deal.II wants MPI initialised first.
+// The main of the unit tests (every tests/test_*.cc one suite of the same
+// program): deal.II wants MPI initialised first.
+#define BOOST_TEST_MODULE penny
+#define BOOST_TEST_NO_MAIN
 #include <deal.II/base/mpi.h>
 
 #include <boost/test/unit_test.hpp>

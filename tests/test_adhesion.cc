@@ -1,8 +1,6 @@
 // The paper's constants recovered from FE solves on test-sized meshes: the
 // adhesionless root c/a = sqrt(3/2), the adhesive minimum (psi, c_min) and the
 // stable-branch equilibrium radius, plus the closed forms they are checked by.
-#define BOOST_TEST_MODULE adhesion
-#define BOOST_TEST_NO_MAIN
 #include "closed_forms/adhesive_gap.h"
 #include "numerics/root_finding.h"
 #include "searches/gap_searches.h"
@@ -14,6 +12,8 @@
 #include <iostream>
 #include <string>
 #include <vector>
+
+BOOST_AUTO_TEST_SUITE(test_adhesion)
 
 namespace tt = boost::test_tools;
 using namespace penny;
@@ -122,3 +122,5 @@ BOOST_AUTO_TEST_CASE(psi_independent_of_scales)
     for (const double k_ic : {1e3, 1e9})
       BOOST_TEST(psi(r_p, k_ic) == reference, tt::tolerance(1e-8));
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -2,8 +2,6 @@
 // independent evaluation of the traction, prescribed mean gap against
 // prescribed mean pressure, hysteresis and jumps along loading and unloading
 // paths, the shape measures, Richardson extrapolation, and bad input.
-#define BOOST_TEST_MODULE adhesive_contact
-#define BOOST_TEST_NO_MAIN
 #include "contact/contact_geometry.h"
 #include "contact/contact_path.h"
 #include "contact/extrapolation.h"
@@ -16,6 +14,8 @@
 #include <cmath>
 #include <limits>
 #include <string>
+
+BOOST_AUTO_TEST_SUITE(test_adhesive_contact)
 
 namespace tt = boost::test_tools;
 using namespace penny;
@@ -249,3 +249,5 @@ BOOST_AUTO_TEST_CASE(bad_input_is_refused_in_one_line)
       [](const std::runtime_error &e) { return says(e, "no convergence in 3 iterations (residual "); });
   BOOST_CHECK_THROW(contact.solve(inf, {100, 1e-10}), std::invalid_argument);
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -3,8 +3,6 @@
 // sinusoid extrapolated to the JKR limit, the JKR sphere's pull-off moving
 // towards -(3/2) pi w R as the range shrinks, and the bi-sinusoid near full
 // contact against its isolated-gap limits.
-#define BOOST_TEST_MODULE contact_verification
-#define BOOST_TEST_NO_MAIN
 #include "closed_forms/periodic_array.h"
 #include "contact/adhesive_bisinusoid.h"
 #include "contact/adhesive_sinusoid.h"
@@ -16,6 +14,8 @@
 
 #include <algorithm>
 #include <cmath>
+
+BOOST_AUTO_TEST_SUITE(test_contact_verification)
 
 namespace tt = boost::test_tools;
 using namespace penny;
@@ -140,3 +140,5 @@ BOOST_AUTO_TEST_CASE(bisinusoid_near_full_contact)
   BOOST_TEST(std::abs(ratios[1] - 1) < 0.15);
   BOOST_TEST(!adhesive_bisinusoid::isolated_gap_radius(0.5 * isolated, alpha).has_value());
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -4,8 +4,6 @@
 // elliptical-gap mesh with the 3D model's zero displacements, degrees 1 to
 // 4, on 1 and 2 ranks; in float (the multigrid's levels) within 1e-5. And the
 // refusal of hanging nodes.
-#define BOOST_TEST_MODULE elastic_diagonal
-#define BOOST_TEST_NO_MAIN
 #include "fe/boundary_ids.h"
 #include "fe/elastic_diagonal.h"
 #include "fe/elliptical_gap_mesh.h"
@@ -22,11 +20,11 @@
 #include <deal.II/matrix_free/tools.h>
 #include <deal.II/numerics/vector_tools.h>
 
-#include "fe/matrix_free_templates.h"
-
 #include <boost/test/unit_test.hpp>
 
 #include <stdexcept>
+
+BOOST_AUTO_TEST_SUITE(test_elastic_diagonal)
 
 using namespace penny;
 using namespace dealii;
@@ -62,12 +60,14 @@ namespace
       matrix_free.reinit(mapping, dof_handler, constraints, QGauss<1>(p + 2), data);
       MatrixFree<3, float>::AdditionalData single_data;
       single_data.mapping_update_flags = update_gradients;
-      single_precision.reinit(mapping, dof_handler, constraints, QGauss<1>(p + 2), single_data);
+      single_constraints.copy_from(constraints);
+      single_precision.reinit(mapping, dof_handler, single_constraints, QGauss<1>(p + 2), single_data);
     }
 
     MappingQ<3>               mapping;
     DoFHandler<3>             dof_handler;
     AffineConstraints<double> constraints;
+    AffineConstraints<float>  single_constraints;
     MatrixFree<3, double>     matrix_free;
     MatrixFree<3, float>      single_precision; // as the multigrid's levels
   };
@@ -126,3 +126,5 @@ BOOST_AUTO_TEST_CASE(hanging_nodes_are_refused)
   discretisation.matrix_free.initialize_dof_vector(diagonal);
   BOOST_CHECK_THROW(add_elastic_diagonal(discretisation.matrix_free, elasticity, diagonal), std::logic_error);
 }
+
+BOOST_AUTO_TEST_SUITE_END()

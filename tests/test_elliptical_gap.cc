@@ -4,8 +4,6 @@
 // a cell), one gap under uniform pressure of either sign against
 // Green-Sneddon/Irwin, with its fields; Galin's closed form for quadratic
 // tractions in two known cases; and the summit searches on it and on FE.
-#define BOOST_TEST_MODULE elliptical_gap
-#define BOOST_TEST_NO_MAIN
 #include "closed_forms/elliptical_crack.h"
 #include "fracture/front_segment_extension.h"
 #include "fracture/front_stress_intensity.h"
@@ -22,6 +20,8 @@
 #include <filesystem>
 #include <iostream>
 #include <tuple>
+
+BOOST_AUTO_TEST_SUITE(test_elliptical_gap)
 
 namespace tt = boost::test_tools;
 using namespace penny;
@@ -579,3 +579,5 @@ BOOST_AUTO_TEST_CASE(summit_searches_on_fe_models)
                  tt::tolerance(5e-2));
     }
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -3,8 +3,6 @@
 // ids on their planes, the box volume, the front's chart and its derivative,
 // serial and distributed builds) and the Green-Sneddon closed forms (circle
 // limit, symmetries, volume and K_I from w).
-#define BOOST_TEST_MODULE elliptical_gap_mesh
-#define BOOST_TEST_NO_MAIN
 #include "closed_forms/elliptical_crack.h"
 #include "fe/boundary_ids.h"
 #include "fe/elliptical_gap_mesh.h"
@@ -22,6 +20,8 @@
 
 #include <algorithm>
 #include <cmath>
+
+BOOST_AUTO_TEST_SUITE(test_elliptical_gap_mesh)
 
 namespace tt = boost::test_tools;
 using namespace penny;
@@ -489,3 +489,5 @@ BOOST_AUTO_TEST_CASE(volume_and_front_asymptotics)
         }
     }
 }
+
+BOOST_AUTO_TEST_SUITE_END()

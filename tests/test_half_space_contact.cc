@@ -4,8 +4,6 @@
 // contact, warm-started load sweeps, iterations that do not grow with the
 // grid, the same solution in any units (the single-precision twin would
 // overflow or underflow in SI units at the extremes), and errors as exceptions.
-#define BOOST_TEST_MODULE half_space_contact
-#define BOOST_TEST_NO_MAIN
 #include "closed_forms/periodic_array.h"
 #include "contact/contact_geometry.h"
 #include "contact/half_space_contact.h"
@@ -17,6 +15,8 @@
 
 #include <algorithm>
 #include <cmath>
+
+BOOST_AUTO_TEST_SUITE(test_half_space_contact)
 
 namespace tt = boost::test_tools;
 using namespace penny;
@@ -279,3 +279,5 @@ BOOST_AUTO_TEST_CASE(errors_are_exceptions)
   with_nan[7]        = std::nan("");
   BOOST_CHECK_THROW(HalfSpaceContact(transform, with_nan, E_star), std::invalid_argument);
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -1,8 +1,6 @@
 // Parameter files: the entries listed once (declared and read from one list),
 // defaults, a shipped scene, the R_p form of the parabola, the subsections
 // each scene reads, and the one-line InputError for each kind of bad entry.
-#define BOOST_TEST_MODULE parameters
-#define BOOST_TEST_NO_MAIN
 #include "input/input_error.h"
 #include "scenes/scene.h"
 #include "test_support.h"
@@ -11,6 +9,8 @@
 
 #include <fstream>
 #include <sstream>
+
+BOOST_AUTO_TEST_SUITE(test_parameters)
 
 using namespace penny;
 
@@ -323,3 +323,5 @@ BOOST_AUTO_TEST_CASE(sinusoid_scenes)
                         "0.25\n set Largest alpha = 0.125\nend\n"),
                "Jump into contact/Largest alpha = 0.125"));
 }
+
+BOOST_AUTO_TEST_SUITE_END()

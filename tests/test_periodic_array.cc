@@ -3,8 +3,6 @@
 // quadrature, Johnson's curve and its extremes against numerical extremes,
 // the critical alpha in 50-digit arithmetic, the small-alpha law, and
 // Westergaard's contact pressure.
-#define BOOST_TEST_MODULE periodic_array
-#define BOOST_TEST_NO_MAIN
 #include "closed_forms/periodic_array.h"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
@@ -15,6 +13,8 @@
 #include <cmath>
 #include <functional>
 #include <limits>
+
+BOOST_AUTO_TEST_SUITE(test_periodic_array)
 
 namespace tt = boost::test_tools;
 using namespace penny;
@@ -158,3 +158,5 @@ BOOST_AUTO_TEST_CASE(westergaard_closed_form)
   BOOST_TEST(periodic_array::westergaard_pressure(0.2, 1) == 1 + std::cos(2 * M_PI * 0.2),
              tt::tolerance(1e-14));
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -3,8 +3,6 @@
 // symmetry line, at other scales and on 1 or 2 MPI ranks; and the
 // computations its scenes build on: the truncation study, the Westergaard and
 // Johnson curves, the critical alpha and the jump into contact.
-#define BOOST_TEST_MODULE periodic_gap
-#define BOOST_TEST_NO_MAIN
 #include "closed_forms/periodic_array.h"
 #include "fe/boundary_ids.h"
 #include "fe/tip_graded_mesh.h"
@@ -16,6 +14,8 @@
 
 #include <iostream>
 #include <set>
+
+BOOST_AUTO_TEST_SUITE(test_periodic_gap)
 
 namespace tt = boost::test_tools;
 using namespace penny;
@@ -206,3 +206,5 @@ BOOST_AUTO_TEST_CASE(critical_alpha_and_jump_into_contact)
                  search_tolerance);
     }
 }
+
+BOOST_AUTO_TEST_SUITE_END()

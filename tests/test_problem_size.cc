@@ -1,8 +1,6 @@
 // The size of a model known before it is built, against the meshes and
 // systems actually built: the quadtree's cells from the parameters, and the
 // degrees of freedom and matrix entries from the cells.
-#define BOOST_TEST_MODULE problem_size
-#define BOOST_TEST_NO_MAIN
 #include "fe/elliptical_gap_model.h"
 #include "fe/penny_gap_mesh.h"
 #include "fe/penny_gap_model.h"
@@ -14,6 +12,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include <iostream>
+
+BOOST_AUTO_TEST_SUITE(test_problem_size)
 
 using namespace penny;
 
@@ -194,3 +194,5 @@ BOOST_AUTO_TEST_CASE(an_elliptical_model_too_large_is_refused_before_it_is_refin
   model.global_refinements = 1;
   BOOST_CHECK_NO_THROW(check_elliptical_model_size(model));
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -3,8 +3,6 @@
 // symmetry, the same surface on a finer grid, sampled mean squares against
 // their lattice expectation within a stated number of standard errors, and
 // realisations gathered over MPI ranks in index order.
-#define BOOST_TEST_MODULE random_field
-#define BOOST_TEST_NO_MAIN
 #include "contact/half_space.h"
 #include "input/input_error.h"
 #include "numerics/solver_failure.h"
@@ -16,6 +14,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+
+BOOST_AUTO_TEST_SUITE(test_random_field)
 
 namespace tt = boost::test_tools;
 using namespace penny;
@@ -218,3 +218,5 @@ BOOST_AUTO_TEST_CASE(a_failure_on_rank_zero_throws_on_every_rank)
                         [](const InputError &error) { return std::string(error.what()) == "bad entry"; });
   BOOST_CHECK_NO_THROW(run_on_rank_zero(MPI_COMM_WORLD, [] {}));
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -1,7 +1,5 @@
 // Penny-gap scenes on test-sized meshes: K_I on every ring, the face opening
 // at the centre and the gap volume within 1e-4 of Sneddon's closed forms.
-#define BOOST_TEST_MODULE scenes
-#define BOOST_TEST_NO_MAIN
 #include "output/table.h"
 #include "scenes/scene.h"
 #include "test_support.h"
@@ -10,6 +8,8 @@
 
 #include <fstream>
 #include <iostream>
+
+BOOST_AUTO_TEST_SUITE(test_scenes)
 
 namespace tt = boost::test_tools;
 using namespace penny;
@@ -160,3 +160,5 @@ BOOST_AUTO_TEST_CASE(far_field_boundary)
   BOOST_TEST(std::abs(free.rings.back().stress_intensity_factor / free.exact_stress_intensity_factor.value -
                       1) > 1e-3);
 }
+
+BOOST_AUTO_TEST_SUITE_END()

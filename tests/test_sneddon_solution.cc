@@ -1,8 +1,6 @@
 // Sneddon's closed forms: the exact formulas against the adaptive quadrature,
 // a load only the quadrature handles against hand-integrated values, and the
 // far field of a gap.
-#define BOOST_TEST_MODULE sneddon_solution
-#define BOOST_TEST_NO_MAIN
 #include "closed_forms/gap_far_field.h"
 #include "closed_forms/sneddon_solution.h"
 #include "input/input_error.h"
@@ -10,6 +8,8 @@
 #include <boost/test/unit_test.hpp>
 
 #include <cmath>
+
+BOOST_AUTO_TEST_SUITE(test_sneddon_solution)
 
 namespace tt = boost::test_tools;
 using namespace penny;
@@ -224,3 +224,5 @@ BOOST_AUTO_TEST_CASE(gap_far_field)
       BOOST_TEST(penny.displacement({0, 0, z})[2] == exact, tt::tolerance(2 * std::pow(gap_radius / z, 2)));
     }
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -5,8 +5,6 @@
 // field refuses a split grid. Each split both ways, in shared memory and by
 // FFTW's MPI plans. Run on 1 rank (the split transform is then the serial
 // one) and on 2.
-#define BOOST_TEST_MODULE split_grid
-#define BOOST_TEST_NO_MAIN
 #include "contact/contact_geometry.h"
 #include "contact/contact_path.h"
 #include "contact/half_space_contact.h"
@@ -21,8 +19,6 @@
 #include <algorithm>
 #include <cmath>
 
-using namespace penny;
-
 namespace penny
 {
   std::ostream &operator<<(std::ostream &out, const SplitTransform how)
@@ -30,6 +26,10 @@ namespace penny
     return out << (how == SplitTransform::shared_memory ? "shared memory" : "FFTW MPI");
   }
 } // namespace penny
+
+BOOST_AUTO_TEST_SUITE(test_split_grid)
+
+using namespace penny;
 
 namespace
 {
@@ -319,3 +319,5 @@ BOOST_DATA_TEST_CASE(errors_reach_every_rank, both_ways, how)
       BOOST_CHECK_THROW(contact_topology(grid, h), std::invalid_argument);
     }
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -1,8 +1,6 @@
 // The statistical layer: PSD moments, summit statistics in both conventions,
 // the aggregation over Gaussian summits against its closed form, the theta
 // fit, and the area-load curve with the FE g at test size.
-#define BOOST_TEST_MODULE statistics
-#define BOOST_TEST_NO_MAIN
 #include "closed_forms/adhesive_gap.h"
 #include "input/input_error.h"
 #include "problems/rough_surface.h"
@@ -18,6 +16,8 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+
+BOOST_AUTO_TEST_SUITE(test_statistics)
 
 namespace tt = boost::test_tools;
 using namespace penny;
@@ -304,3 +304,5 @@ BOOST_AUTO_TEST_CASE(fe_gap_function_aggregation)
   BOOST_TEST(verdict.passed, verdict.message);
   BOOST_TEST(std::filesystem::is_regular_file(scratch.path / "results" / "fe-gap-area.csv"));
 }
+
+BOOST_AUTO_TEST_SUITE_END()

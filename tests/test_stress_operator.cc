@@ -2,8 +2,6 @@
 // reproduced exactly at every quadrature point, with one degree and with
 // degrees graded towards the tip, and carries no energy release rate; the hoop strain on the axis; plane
 // strain has no out-of-plane strain.
-#define BOOST_TEST_MODULE stress_operator
-#define BOOST_TEST_NO_MAIN
 #include "fe/elasticity.h"
 #include "fe/penny_gap_model.h"
 #include "fracture/crack_extension.h"
@@ -22,6 +20,8 @@
 
 #include <algorithm>
 #include <iostream>
+
+BOOST_AUTO_TEST_SUITE(test_stress_operator)
 
 using namespace dealii;
 using namespace penny;
@@ -133,3 +133,5 @@ BOOST_AUTO_TEST_CASE(hooke_and_von_mises)
   uniaxial[1][1] = -7;
   BOOST_TEST(von_mises(uniaxial) == 7., boost::test_tools::tolerance(1e-15));
 }
+
+BOOST_AUTO_TEST_SUITE_END()

@@ -2,8 +2,6 @@
 // with known summits, the Kac-Rice expectations against Nayak's closed forms,
 // quadrature and Monte Carlo, the ensemble arithmetic, and the summits of
 // sampled Gaussian fields against their expectation.
-#define BOOST_TEST_MODULE summit_statistics
-#define BOOST_TEST_NO_MAIN
 #include "contact/half_space.h"
 #include "statistics/random_field.h"
 #include "statistics/roughness.h"
@@ -15,6 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <random>
+
+BOOST_AUTO_TEST_SUITE(test_summit_statistics)
 
 namespace tt = boost::test_tools;
 using namespace penny;
@@ -227,3 +227,5 @@ BOOST_AUTO_TEST_CASE(summits_of_gaussian_fields_match_their_expectation)
   const PressureSummits paper = pressure_summits(spectral_moments(heights), E_star, Convention::paper);
   BOOST_TEST(paper.density > e.density.value + 100 * e.density.standard_error);
 }
+
+BOOST_AUTO_TEST_SUITE_END()

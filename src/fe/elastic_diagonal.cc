@@ -1,7 +1,5 @@
 #include "fe/elastic_diagonal.h"
 
-#include "fe/matrix_free_templates.h"
-
 #include <array>
 #include <stdexcept>
 #include <vector>

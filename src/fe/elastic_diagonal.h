@@ -27,8 +27,8 @@ namespace penny
 {
   // The cell evaluation of one FESystem of FE_Q (three components), its
   // degree and points known at run time (deal.II's kernels for degrees 1 to
-  // 6 and a generic one above, instantiated at this machine's SIMD width by
-  // fe/matrix_free_templates.h).
+  // 6 and a generic one above, instantiated at this machine's SIMD width in
+  // fe/cell_kernel_instances_*.cc).
   // Number: double for the system's operator, float for the multigrid's.
   template <typename Number> using ElasticEvaluation = dealii::FEEvaluation<3, -1, 0, 3, Number>;
 

@@ -10,8 +10,6 @@
 #include <deal.II/matrix_free/matrix_free.h>
 #include <deal.II/matrix_free/tools.h>
 
-#include "fe/matrix_free_templates.h"
-
 #include <algorithm>
 #include <stdexcept>
 #include <string>
