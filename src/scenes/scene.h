@@ -110,7 +110,7 @@ namespace penny
 #define PENNY_REGISTER_SCENE(Class, name, section, description, measure)                                     \
   namespace                                                                                                  \
   {                                                                                                          \
-    const bool registered_scene = ::penny::register_scene(                                                   \
+    const bool registered_##Class = ::penny::register_scene(                                                 \
         {name, section, description, measure,                                                                \
          []() -> std::unique_ptr<::penny::Scene> { return std::make_unique<Class>(); }});                    \
   }

@@ -24,13 +24,14 @@ namespace penny
     using dealii::TimerOutput;
 
     // The model and the gap of one case.
-    struct Setting
+    struct EllipticalSetting
     {
       EllipticalModel model;
       EllipticalGap   gap;
     };
 
-    EllipticalGapMeasurement solve(Setting setting, const std::function<void(Setting &)> &modify)
+    EllipticalGapMeasurement solve(EllipticalSetting                               setting,
+                                   const std::function<void(EllipticalSetting &)> &modify)
     {
       modify(setting);
       TimerOutput        timer(std::cout, TimerOutput::never, TimerOutput::wall_times);
@@ -44,7 +45,8 @@ namespace penny
 
     // Refuses, before any case is solved, a case's model too large for the
     // memory, naming the case.
-    void check_size(Setting setting, const std::string &name, const std::function<void(Setting &)> &modify)
+    void check_size(EllipticalSetting setting, const std::string &name,
+                    const std::function<void(EllipticalSetting &)> &modify)
     {
       modify(setting);
       try
@@ -91,23 +93,24 @@ namespace penny
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
       {
-        const Setting base   = setting;
-        const double  target = target_accuracy;
+        const EllipticalSetting base   = setting;
+        const double            target = target_accuracy;
         // The largest models: the slenderest gap (the most rings), the
         // largest box (the most shells), the solver case's direct and AMG.
         using Type = LinearSolverParameters::Type;
         check_size(base, setting_text("slender gap b/a = ", aspect_ratios.back()),
-                   [](Setting &s) { s.gap.aspect_ratio = aspect_ratios.back(); });
-        check_size(base, setting_text("box R/a = H/a = ", boxes.back()), [](Setting &s) {
+                   [](EllipticalSetting &s) { s.gap.aspect_ratio = aspect_ratios.back(); });
+        check_size(base, setting_text("box R/a = H/a = ", boxes.back()), [](EllipticalSetting &s) {
           s.model.model.mesh.domain_width = s.model.model.mesh.domain_height = boxes.back();
         });
         for (const auto &[type, name] :
              {std::pair{Type::direct, "direct"}, std::pair{Type::cg_amg, "CG + AMG"}})
           check_size(base, std::string("solvers, ") + name,
-                     [type = type](Setting &s) { s.model.model.linear_solver.type = type; });
+                     [type = type](EllipticalSetting &s) { s.model.model.linear_solver.type = type; });
         std::vector<StabilityCase> cases;
         const auto                 relative = [&](const std::string &name, const std::string &text,
-                                  const std::function<void(Setting &)> &modify, const std::string &miss) {
+                                  const std::function<void(EllipticalSetting &)> &modify,
+                                  const std::string                              &miss) {
           cases.push_back({name, text, "relative, every point and ring", target, [&base, modify] {
                              const EllipticalGapMeasurement solved = solve(base, modify);
                              return outcome(solved, solved.largest_error);
@@ -119,7 +122,7 @@ namespace penny
         for (const double nu : {0.3, 0.45, 0.49, 0.499})
           relative(
               "incompressibility", setting_text("nu = ", nu),
-              [=](Setting &s) { s.model.model.material.poissons_ratio = nu; },
+              [=](EllipticalSetting &s) { s.model.model.material.poissons_ratio = nu; },
               nu >= 0.45 ? "nu -> 1/2: the volumetric stiffness dominates and low degrees lock" : "");
 
         // 2. Slender gaps: the light mesh's cells around the tip are coarse
@@ -130,7 +133,7 @@ namespace penny
         for (const double aspect_ratio : aspect_ratios)
           relative(
               "slender gap", setting_text("b/a = ", aspect_ratio),
-              [=](Setting &s) { s.gap.aspect_ratio = aspect_ratio; },
+              [=](EllipticalSetting &s) { s.gap.aspect_ratio = aspect_ratio; },
               aspect_ratio < 0.5 ? "slender gap: the cells around the tip are coarse for its radius of "
                                    "curvature b^2/a, and rings in b^2/a span few cells"
                                  : "");
@@ -139,7 +142,7 @@ namespace penny
         for (const double box : boxes)
           relative(
               "box", setting_text("R/a = H/a = ", box),
-              [=](Setting &s) {
+              [=](EllipticalSetting &s) {
                 s.model.model.mesh.domain_width  = box;
                 s.model.model.mesh.domain_height = box;
               },
@@ -148,12 +151,12 @@ namespace penny
                   : "");
 
         // 4. Extreme scales: the same K_FE/K_exact as the unit case, to 1e-8.
-        const std::vector<double> unit = ratios_to_exact(solve(base, [](Setting &) {}));
+        const std::vector<double> unit = ratios_to_exact(solve(base, [](EllipticalSetting &) {}));
         for (const double E : {1e-3, 1e12})
           for (const double a : {1e-9, 1e3})
             cases.push_back({"scales", setting_text("E = ", E) + setting_text(" Pa, a = ", a) + " m",
                              "vs unit case", 1e-8, [&base, &unit, E, a] {
-                               const EllipticalGapMeasurement solved = solve(base, [=](Setting &s) {
+                               const EllipticalGapMeasurement solved = solve(base, [=](EllipticalSetting &s) {
                                  s.model.model.material.youngs_modulus = E;
                                  s.gap.semi_axis_a                     = a;
                                });
@@ -164,7 +167,7 @@ namespace penny
         cases.push_back(
             {"solvers", "CG + AMG (1e-12) vs direct", "vs direct, every point and ring", 1e-8, [&base] {
                const auto with = [](const LinearSolverParameters::Type type) {
-                 return [=](Setting &s) {
+                 return [=](EllipticalSetting &s) {
                    s.model.model.linear_solver.type      = type;
                    s.model.model.linear_solver.tolerance = 1e-12;
                  };
@@ -180,8 +183,8 @@ namespace penny
         return {false, std::to_string(failures) + " 3D stability case(s) failed; see stability.csv"};
       }
 
-      Setting setting;
-      double  target_accuracy;
+      EllipticalSetting setting;
+      double            target_accuracy;
     };
   } // namespace
 
