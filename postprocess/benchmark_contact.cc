@@ -21,15 +21,21 @@
 // lines (A_nc and the mean gap, all digits) for comparison across rank
 // counts (postprocess/benchmark_contact_ranks.sh).
 //
+// "adhesive" runs the adhesive solver's table instead, on one rank
+// (benchmark_contact_adhesive.cc): iterations and wall time per solve against
+// the cohesive zone and the grid, for Johnson's sinusoid, the JKR sphere and
+// the random surface.
+//
 // Usage: [mpirun -np P] benchmark_contact [measure] [fftw-mpi] [N ...]
+//        benchmark_contact [measure] adhesive [johnson] [sphere] [random]
 // (N in [256, 65536], default 256 512 1024 2048 4096; "measure": FFTW_MEASURE plans instead
-// of FFTW_ESTIMATE; "fftw-mpi": FFTW's MPI plans on one node too)
+// of FFTW_ESTIMATE; "fftw-mpi": FFTW's MPI plans on one node too; the adhesive problems: all if none named)
+#include "benchmark_contact.h"
 #include "contact/half_space_contact.h"
 #include "statistics/random_field.h"
 #include "statistics/roughness.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -44,15 +50,8 @@
 
 using namespace penny;
 
-namespace
+namespace penny::benchmark
 {
-  using Clock = std::chrono::steady_clock;
-
-  double seconds_since(const Clock::time_point start)
-  {
-    return std::chrono::duration<double>(Clock::now() - start).count();
-  }
-
   std::string load_average()
   {
     std::ifstream file("/proc/loadavg");
@@ -61,6 +60,29 @@ namespace
     return one + " " + five + " " + fifteen;
   }
 
+  template <typename Real> double convolution_time(const BasicFourierTransform<Real> &transform)
+  {
+    const auto identity = transform.tabulate_real([](const Wavevector &) { return 1.; });
+    transform.for_each_point([&](std::size_t, const std::size_t w) { transform.work_array()[w] = 1; });
+    const auto   start   = Clock::now();
+    unsigned int repeats = 0;
+    for (int more = 1; more;)
+      {
+        transform.convolve_work_array(identity);
+        more = ++repeats < 3 || seconds_since(start) < 1;
+        MPI_Bcast(&more, 1, MPI_INT, 0, transform.communicator());
+      }
+    return seconds_since(start) / repeats;
+  }
+
+  template double convolution_time(const BasicFourierTransform<double> &);
+  template double convolution_time(const BasicFourierTransform<float> &);
+} // namespace penny::benchmark
+
+using namespace penny::benchmark;
+
+namespace
+{
   // The largest peak resident memory of the ranks (MB), from /proc/self/status.
   double peak_memory_per_rank(const MPI_Comm communicator)
   {
@@ -128,11 +150,23 @@ int main(int argc, char **argv)
       Planning                  planning = Planning::estimate;
       SplitTransform            how      = SplitTransform::shared_memory;
       std::vector<unsigned int> sizes;
+      bool                      adhesive = false;
+      std::vector<std::string>  problems; // of the adhesive table
       for (int k = 1; k < argc; ++k)
         if (std::strcmp(argv[k], "measure") == 0)
           planning = Planning::measure;
         else if (std::strcmp(argv[k], "fftw-mpi") == 0)
           how = SplitTransform::fftw_mpi;
+        else if (std::strcmp(argv[k], "adhesive") == 0)
+          adhesive = true;
+        else if (adhesive)
+          {
+            if (std::strcmp(argv[k], "johnson") != 0 && std::strcmp(argv[k], "sphere") != 0 &&
+                std::strcmp(argv[k], "random") != 0)
+              throw std::invalid_argument(std::string("benchmark_contact adhesive: '") + argv[k] +
+                                          "' is none of the problems 'johnson', 'sphere', 'random'");
+            problems.push_back(argv[k]);
+          }
         else
           {
             // The adhesive solve's cohesive zone, lambda0/64, needs 4 grid spacings.
@@ -145,7 +179,12 @@ int main(int argc, char **argv)
                                           std::to_string(smallest) + ", 65536]");
             sizes.push_back(n);
           }
-      if (sizes.empty())
+      if (adhesive && !sizes.empty())
+        throw std::invalid_argument(
+            "benchmark_contact: grid sizes are for the adhesionless table, not 'adhesive'");
+      if (adhesive)
+        adhesive_benchmark(problems, planning, how);
+      if (sizes.empty() && !adhesive)
         sizes = {256, 512, 1024, 2048, 4096};
 
       const double               lambda0 = 1e-3, E_star = 1e7 / (1 - 0.49 * 0.49);
@@ -172,20 +211,8 @@ int main(int argc, char **argv)
               std::sqrt(lattice_moments(grid, pressure_spectrum(spectrum, E_star)).expected.m0);
           const HalfSpaceContact contact(transform, h, E_star);
 
-          // One convolution on its own, for the cost of an iteration in FFTs
-          // (rank 0's clock decides when to stop, for all ranks).
-          transform.for_each_point(
-              [&](const std::size_t i, const std::size_t w) { transform.work_array()[w] = h[i]; });
-          const auto   fft_start = Clock::now();
-          const auto   identity  = transform.tabulate_real([](const Wavevector &) { return 1.; });
-          unsigned int repeats   = 0;
-          for (int more = 1; more;)
-            {
-              transform.convolve_work_array(identity);
-              more = ++repeats < 3 || seconds_since(fft_start) < 1;
-              MPI_Bcast(&more, 1, MPI_INT, 0, world);
-            }
-          const double convolution_time = seconds_since(fft_start) / repeats;
+          // One convolution on its own, for the cost of an iteration in FFTs.
+          const double convolution_time = penny::benchmark::convolution_time(transform);
 
           const auto            start = Clock::now();
           const ContactSolution single =
@@ -238,7 +265,9 @@ int main(int argc, char **argv)
                    step.noncontact_fraction, step.mean_gap);
           result("adhesive", 1 - adhesive.contact_fraction, adhesive.mean_gap);
         }
-      print("%s",
+      if (!sizes.empty())
+        print(
+            "%s",
             "# iter, time: adhesionless at 2 sqrt(V) from full contact; s/conv: one r2c + c2r pair in double "
             "precision;\n# iter/c: the time of an iteration in those convolutions (an iteration does 2.5 in "
             "single precision); old res: the gap residual of Polonsky and Keer's definition;\n# cold iter: "

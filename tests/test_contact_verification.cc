@@ -42,7 +42,7 @@ BOOST_AUTO_TEST_CASE(johnson_sinusoid_in_the_jkr_limit)
           BOOST_TEST(curve[k].contact_ratio == ratios[k], tt::tolerance(1e-8));
           loads[k].push_back(curve[k].load_ratio);
         }
-      loads.back().push_back(model.jump_into_contact(control).load_ratio);
+      loads.back().push_back(model.jump_into_contact(control, curve).load_ratio);
     }
   for (std::size_t k = 0; k < ratios.size(); ++k)
     {

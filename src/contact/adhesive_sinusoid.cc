@@ -3,6 +3,7 @@
 #include "contact/contact_geometry.h"
 #include "contact/contact_path.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <string>
@@ -46,22 +47,42 @@ namespace penny::adhesive_sinusoid
         surface.adhesionless().solve(std::pow(std::sin(M_PI * contact_ratios.front()), 2), control);
     current = surface.adhesive().solve_at_mean_gap(current.mean_gap, control, current.gap);
     CurvePoint              point      = state(current);
+    CurvePoint              before     = point; // the state of the target before `point`'s
     unsigned int            iterations = current.iterations;
     std::vector<CurvePoint> points;
     for (const double target : contact_ratios)
       {
-        // a/lambda falls as the mean gap rises. Bracket the target by steps
-        // of 10 %, then regula falsi (Illinois) on the bracket.
         const auto at = [&](const double mean_gap) {
           current = surface.adhesive().solve_at_mean_gap(mean_gap * h0, control, current.gap);
           iterations += current.iterations;
           return state(current);
         };
+        // a/lambda falls as the mean gap rises. Bracket the target from the
+        // last state by steps 1.5 times the secant's through the last two
+        // states (the next targets' states lie on a smooth curve: one step
+        // mostly), or of 10 % while they share one a/lambda, never more than
+        // 20 % of the mean gap.
+        const CurvePoint last = point;
         CurvePoint low = point, high = point; // a(low) >= target >= a(high), low.mean_gap <= high.mean_gap
-        while (low.contact_ratio < target)
-          low = at(low.mean_gap * 0.9);
-        while (high.contact_ratio > target)
-          high = at(high.mean_gap * 1.1);
+        while (low.contact_ratio < target || high.contact_ratio > target)
+          {
+            const bool   down   = point.contact_ratio < target;
+            const double secant = point.contact_ratio != before.contact_ratio
+                                      ? (target - point.contact_ratio) * (point.mean_gap - before.mean_gap) /
+                                            (point.contact_ratio - before.contact_ratio)
+                                      : 0;
+            const double step =
+                secant != 0 && (secant < 0) == down ? 1.5 * std::abs(secant) : 0.1 * point.mean_gap;
+            before = point;
+            point  = at(point.mean_gap + (down ? -1 : 1) * std::min(step, 0.2 * point.mean_gap));
+            if (point.contact_ratio >= target &&
+                (low.contact_ratio < target || point.mean_gap > low.mean_gap))
+              low = point;
+            if (point.contact_ratio <= target &&
+                (high.contact_ratio > target || point.mean_gap < high.mean_gap))
+              high = point;
+          }
+        before = last;
         // f = a/lambda - target, f(low) > 0 > f(high); the end kept twice running has its f halved.
         double f_low = low.contact_ratio - target, f_high = high.contact_ratio - target;
         int    kept = 0; // +1: low kept last time, -1: high
@@ -108,12 +129,20 @@ namespace penny::adhesive_sinusoid
     return points;
   }
 
-  CurvePoint Model::jump_into_contact(const ContactSolverControl &control) const
+  CurvePoint Model::jump_into_contact(const ContactSolverControl    &control,
+                                      const std::vector<CurvePoint> &curve) const
   {
-    // From the strip of a/lambda = 0.3, the mean gap falls by 10 % a step.
-    const CurvePoint      start = loads_at_half_widths({0.3}, control).back();
-    const ContactSolution from  = surface.adhesive().solve_at_mean_gap(start.mean_gap * h0, control);
-    CurvePoint            jump  = state(load_extremum(surface.adhesive(), control, from, 0.9, true));
+    // From the strip of a/lambda = 0.3 (before the jump at every alpha up to
+    // 0.56), taken from the curve where it has that half-width; from a cold
+    // start at its mean gap, the mean gap falls by 10 % a step.
+    const double     start_ratio = 0.3;
+    const auto       on_curve    = std::find_if(curve.begin(), curve.end(), [&](const CurvePoint &point) {
+      return std::abs(point.contact_ratio - start_ratio) <= 1e-8;
+    });
+    const CurvePoint from =
+        on_curve != curve.end() ? *on_curve : loads_at_half_widths({start_ratio}, control).back();
+    const ContactSolution start = surface.adhesive().solve_at_mean_gap(from.mean_gap * h0, control);
+    CurvePoint            jump  = state(load_extremum(surface.adhesive(), control, start, 0.9, true));
     jump.iterations             = 0;
     return jump;
   }

@@ -51,7 +51,10 @@ namespace penny::adhesive_sinusoid
     // The jump into full contact: the largest p_bar/p* along that path
     // (a maximum under prescribed mean gap, where prescribed mean pressure
     // ends the path), by successive parabolic interpolation in the mean gap.
-    CurvePoint jump_into_contact(const ContactSolverControl &control) const;
+    // It starts from the strip of a/lambda = 0.3, found on `curve` (from
+    // loads_at_half_widths) where that holds it.
+    CurvePoint jump_into_contact(const ContactSolverControl    &control,
+                                 const std::vector<CurvePoint> &curve) const;
 
   private:
     CurvePoint state(const ContactSolution &solution) const;

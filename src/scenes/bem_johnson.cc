@@ -136,7 +136,7 @@ namespace penny
                   const unsigned int             n = grid_points(zones[z], points);
                   const adhesive_sinusoid::Model model({alpha, zones[z], n});
                   const auto                     curve      = model.loads_at_half_widths(ratios, control);
-                  const auto                     jump       = model.jump_into_contact(control);
+                  const auto                     jump       = model.jump_into_contact(control, curve);
                   unsigned int                   iterations = 0;
                   for (std::size_t k = 0; k < ratios.size(); ++k)
                     {
