@@ -48,13 +48,13 @@ namespace penny::adhesive_sinusoid
     current = surface.adhesive().solve_at_mean_gap(current.mean_gap, control, current.gap);
     CurvePoint              point      = state(current);
     CurvePoint              before     = point; // the state of the target before `point`'s
-    unsigned int            iterations = current.iterations;
+    unsigned int            iterations = current.iterations + std::lround(current.coarse_iterations);
     std::vector<CurvePoint> points;
     for (const double target : contact_ratios)
       {
         const auto at = [&](const double mean_gap) {
           current = surface.adhesive().solve_at_mean_gap(mean_gap * h0, control, current.gap);
-          iterations += current.iterations;
+          iterations += current.iterations + std::lround(current.coarse_iterations);
           return state(current);
         };
         // a/lambda falls as the mean gap rises. Bracket the target from the

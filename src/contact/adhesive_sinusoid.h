@@ -34,7 +34,8 @@ namespace penny::adhesive_sinusoid
     double       contact_ratio; // a/lambda
     double       load_ratio;    // p_bar/p*
     double       mean_gap;      // <g>/h0
-    unsigned int iterations;    // of the solves that found it
+    unsigned int iterations; // of the solves that found it, with nested iteration's on coarser grids weighted
+                             // by their points
   };
 
   class Model

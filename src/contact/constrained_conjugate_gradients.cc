@@ -151,7 +151,7 @@ namespace penny
     // that it keeps the mean of g, and mu and the gradient with it. P_F C P_F 1
     // is convolved again only when the free set has changed (near the
     // solution it rarely does: one convolution of four in an iteration saved).
-    double     response_sum = 0;
+    double     response_sum  = 0;
     const auto keep_mean_gap = [&](const bool free_set_changed, const double step_sum) {
       if (free_set_changed)
         {
@@ -247,9 +247,9 @@ namespace penny
         each_point([&](const std::size_t i, const std::size_t w) {
           elastic_traction[i] =
               recomputed ? full_contact[i] + work[w] : elastic_traction[i] + preconditioned[w];
-          gradient[i]       = elastic_traction[i] + mu + attraction(i);
-          const bool was    = free(i);
-          point[i]          = gap[i] > 0 ? Point::open : gradient[i] < 0 ? Point::leaving : Point::held;
+          gradient[i]    = elastic_traction[i] + mu + attraction(i);
+          const bool was = free(i);
+          point[i]       = gap[i] > 0 ? Point::open : gradient[i] < 0 ? Point::leaving : Point::held;
           free_set_changed |= was != free(i);
           preconditioned[w] = free(i) ? gradient[i] : 0;
         });

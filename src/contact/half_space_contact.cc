@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -105,13 +106,19 @@ namespace penny
     for (double &p : full_contact)
       p /= traction_unit;
 
-    // The halved problems of nested iteration, built once for every cold start.
-    if (const std::optional<PeriodicGrid> grid = halved(transform.grid(), 128); grid && !adhesion.active())
+    // The halved problems of nested iteration, built once for every solve.
+    // With adhesion only while the halved grid keeps the cohesive zone over
+    // min_process_zone_points spacings: a longer zone is a weaker adhesion
+    // (strength w/rho), whose solution can lie on another branch (it let a
+    // full contact held by adhesion open).
+    const std::optional<PeriodicGrid> halved_grid = halved(transform.grid(), 128);
+    if (halved_grid && (!adhesion.active() || adhesion.process_zone(E_star) / grid_spacing(*halved_grid) >=
+                                                  min_process_zone_points * (1 - 1e-9)))
       {
-        coarse_transform = std::make_unique<FourierTransform>(*grid, transform.planning(),
+        coarse_transform = std::make_unique<FourierTransform>(*halved_grid, transform.planning(),
                                                               transform.communicator(), split_of(transform));
         coarse           = std::make_unique<HalfSpaceContact>(
-            *coarse_transform, resampled(transform, *coarse_transform, heights_), E_star);
+            *coarse_transform, resampled(transform, *coarse_transform, heights_), E_star, adhesion);
       }
   }
 
@@ -125,7 +132,9 @@ namespace penny
                     mean_pressure));
     // A rank may hold no rows: whether a gap was given is decided over all ranks.
     const bool given = on_any_rank(transform_, !initial_gap.empty());
-    if (given || !coarse)
+    if (given && coarse && adhesion_.active())
+      return nested(Control::mean_pressure, mean_pressure, control, initial_gap);
+    if (given || !coarse || adhesion_.active())
       {
         GridField gap = given ? initial_gap : GridField(heights_.size(), 0.);
         return minimise(Control::mean_pressure, mean_pressure, control, std::move(gap));
@@ -165,12 +174,53 @@ namespace penny
     if (!(mean_gap > 0) || !std::isfinite(mean_gap))
       throw std::invalid_argument(
           formatted("contact solver: the mean gap %g m is outside the allowed range (0, inf)", mean_gap));
-    const bool   given   = on_any_rank(transform_, !initial_gap.empty());
+    const bool given = on_any_rank(transform_, !initial_gap.empty());
+    if (given && coarse && adhesion_.active())
+      return nested(Control::mean_gap, mean_gap, control, initial_gap);
     GridField    gap     = given ? initial_gap : GridField(heights_.size(), 0.);
     const double current = on_any_rank(transform_, gap.size() != heights_.size()) ? 0 : mean(transform_, gap);
     for (double &g : gap)
       g = current > 0 ? g * mean_gap / current : mean_gap;
     return minimise(Control::mean_gap, mean_gap, control, std::move(gap));
+  }
+
+  // With adhesion, from a given gap: the problem on the halved grid first,
+  // from the given gap restricted to it, to the larger of the tolerance and
+  // 1e-6 (recursively), then this grid from that gap interpolated. The given
+  // gap itself is the start where the halved problem has no solution (it can
+  // pull off or fail to converge where this one does not).
+  ContactSolution HalfSpaceContact::nested(const Control control_kind, const double value,
+                                           const ContactSolverControl &control,
+                                           const GridField            &initial_gap) const
+  {
+    GridField restricted = resampled(transform_, *coarse_transform, initial_gap);
+    for (double &g : restricted)
+      g = std::max(g, 0.);
+    const ContactSolverControl     coarse_control{control.max_iterations, std::max(control.tolerance, 1e-6)};
+    std::optional<ContactSolution> start;
+    try
+      {
+        start = control_kind == Control::mean_pressure
+                    ? coarse->solve(value, coarse_control, restricted)
+                    : coarse->solve_at_mean_gap(value, coarse_control, restricted);
+      }
+    catch (const std::runtime_error &)
+      {
+      }
+    GridField gap = start ? interpolated(*coarse_transform, start->gap, transform_) : initial_gap;
+    for (double &g : gap)
+      g = std::max(g, 0.);
+    if (control_kind == Control::mean_gap)
+      {
+        const double current = mean(transform_, gap);
+        for (double &g : gap)
+          g = current > 0 ? g * value / current : value;
+      }
+    ContactSolution solution = minimise(control_kind, value, control, std::move(gap));
+    if (start)
+      solution.coarse_iterations = (start->iterations + start->coarse_iterations) *
+                                   coarse_transform->grid().n_points() / transform_.grid().n_points();
+    return solution;
   }
 
   std::vector<LoadStep> load_sweep(const HalfSpaceContact &contact, const std::vector<double> &mean_pressures,

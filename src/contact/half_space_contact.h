@@ -61,8 +61,8 @@ namespace penny
     double       contact_fraction; // share of grid points with g = 0
     double       energy;           // (1/2) <(g + h) K (g + h)> + <phi(g)> (J/m^2); add p_bar <g> for Pi
     unsigned int iterations;
-    // Iterations of a cold start's solves on coarser grids (solve() without
-    // adhesion), weighted by their grid points relative to this grid's.
+    // Iterations of nested iteration's solves on coarser grids, weighted by
+    // their grid points relative to this grid's.
     double coarse_iterations;
     // The displacement that the unbalanced traction of the gap points would
     // cause there, rms over the grid in units of the rms height (doc/contact-notes.md).
@@ -89,7 +89,13 @@ namespace penny
     // 128 points a side; to a tolerance of at least 1e-4) and starts from that
     // gap interpolated: nested iteration, after which the iterations on the
     // fine grid hardly depend on it (on a split grid the halved grids are
-    // split over the same ranks). Throws ContactSolverFailure (one line)
+    // split over the same ranks). With adhesion a start from `initial_gap` is
+    // nested too, while the halved grid keeps the cohesive zone over
+    // min_process_zone_points spacings: the halved grid's problem is solved
+    // from the gap restricted to it and its solution, interpolated, starts
+    // this grid's, so that the contact edges arrive within the coarse grid's
+    // error of their place instead of travelling the whole way here.
+    // Throws ContactSolverFailure (one line)
     // if the residual does not fall below the tolerance within
     // max_iterations, std::runtime_error if the surfaces separate (p_bar
     // beyond the pull-off load).
@@ -97,9 +103,9 @@ namespace penny
                           const GridField &initial_gap = {}) const;
 
     // Equilibrium at mean gap g_bar > 0 (displacement control), from
-    // `initial_gap` scaled to that mean or, if empty or zero, from the uniform
-    // gap g_bar. It passes the load extremes (pull-off, jump into contact)
-    // that end a path at prescribed mean pressure.
+    // `initial_gap` scaled to that mean (with adhesion nested as in solve())
+    // or, if empty or zero, from the uniform gap g_bar. It passes the load extremes (pull-off, jump into
+    // contact) that end a path at prescribed mean pressure.
     ContactSolution solve_at_mean_gap(double mean_gap, const ContactSolverControl &control,
                                       const GridField &initial_gap = {}) const;
 
@@ -116,6 +122,8 @@ namespace penny
     };
     ContactSolution minimise(Control control, double value, const ContactSolverControl &solver,
                              GridField gap) const;
+    ContactSolution nested(Control control, double value, const ContactSolverControl &solver,
+                           const GridField &initial_gap) const;
 
     const FourierTransform &transform_;
     GridField               heights_;
@@ -137,8 +145,8 @@ namespace penny
     SingleFourierTransform::RealMultiplier single_stiffness;
     SingleFourierTransform::RealMultiplier compliance; // C E* q_min = 2 q_min/|q|, 2 at q = 0
     double point_compliance; // the diagonal of C: the displacement of a point under its own unit load
-    // Without adhesion: the problem on the grid halved in each direction, for
-    // nested iteration (none if the grid cannot be halved).
+    // The problem on the grid halved in each direction, for nested iteration
+    // (none if the grid cannot be halved).
     std::unique_ptr<const FourierTransform> coarse_transform;
     std::unique_ptr<const HalfSpaceContact> coarse;
   };

@@ -173,7 +173,10 @@ namespace penny
                 "Johnson's adhesive sinusoid by boundary elements: p_bar/p* at a/lambda (the edge where the "
                 "gap reaches rho) and at the jump into contact, on the finest grid at each cohesive zone and "
                 "extrapolated to the JKR limit, beside Johnson's closed form and the FE periodic gap");
-        publish(cost, "bem-johnson-cost.csv", results, log, "Solves of each alpha, zone and grid:");
+        publish(
+            cost, "bem-johnson-cost.csv", results, log,
+            "Solves of each alpha, zone and grid (iterations on the grid, and on the halved grids of nested "
+            "iteration weighted by their points; the a/lambda solves only):");
         return verdict(worst);
       }
 
