@@ -121,6 +121,33 @@ BOOST_AUTO_TEST_CASE(prescribed_mean_gap_and_mean_pressure_agree)
   BOOST_TEST(at_gap.mean_gap == 0.8 * start.mean_gap, tt::tolerance(1e-12));
 }
 
+BOOST_AUTO_TEST_CASE(nested_start_and_a_bad_initial_gap)
+{
+  // 16 points per zone: the halved grids of 8 and 4 points per zone start
+  // each solve from a given gap (coarse iterations counted), and a start
+  // that does not fit the grid, or is negative or NaN, is refused by name
+  // before it is restricted to them.
+  const FourierTransform     transform(PeriodicGrid{n, 1, 1., 1. / n});
+  const HalfSpaceContact     plain(transform, sinusoid(transform.grid()), 1.);
+  const HalfSpaceContact     contact(transform, sinusoid(transform.grid()), 1., sticky);
+  const ContactSolverControl control{10000, 1e-10};
+  const ContactSolution      start = plain.solve(0.3, control);
+  BOOST_TEST(contact.solve_at_mean_gap(start.mean_gap, control, start.gap).coarse_iterations > 0);
+  BOOST_TEST(contact.solve(0.3, control, start.gap).coarse_iterations > 0);
+  for (const int fault : {0, 1, 2})
+    {
+      GridField gap = start.gap;
+      if (fault == 0)
+        gap.resize(17);
+      else
+        gap[5] = fault == 1 ? std::numeric_limits<double>::quiet_NaN() : -1;
+      const auto refused = [](const std::invalid_argument &e) { return says(e, "the initial gap"); };
+      BOOST_CHECK_EXCEPTION(contact.solve_at_mean_gap(start.mean_gap, control, gap), std::invalid_argument,
+                            refused);
+      BOOST_CHECK_EXCEPTION(contact.solve(0.3, control, gap), std::invalid_argument, refused);
+    }
+}
+
 BOOST_AUTO_TEST_CASE(hysteresis_and_jumps_along_paths)
 {
   // Loading: the gap shrinks, then snaps shut past the largest load of the
