@@ -91,6 +91,15 @@ namespace penny
 
   } // namespace
 
+  void HalfSpaceContact::check_start(const GridField &gap) const
+  {
+    if (on_any_rank(transform_, gap.size() != heights_.size()))
+      throw std::invalid_argument("contact solver: the initial gap does not match the grid");
+    if (on_any_rank(transform_, !std::all_of(gap.begin(), gap.end(),
+                                             [](double g) { return g >= 0 && std::isfinite(g); })))
+      throw std::invalid_argument("contact solver: the initial gap must be finite and >= 0");
+  }
+
   // Bound-constrained conjugate gradients in the gap (Polonsky and Keer's
   // iteration turned round, with Vollebregt's continuation across changes of
   // the free set and a Fourier preconditioner; doc/contact-notes.md):
@@ -110,11 +119,7 @@ namespace penny
                                              const ContactSolverControl &solver, GridField gap) const
   {
     const std::size_t n = heights_.size(), n_points = transform_.grid().n_points();
-    if (on_any_rank(transform_, gap.size() != n))
-      throw std::invalid_argument("contact solver: the initial gap does not match the grid");
-    if (on_any_rank(transform_, !std::all_of(gap.begin(), gap.end(),
-                                             [](double g) { return g >= 0 && std::isfinite(g); })))
-      throw std::invalid_argument("contact solver: the initial gap must be finite and >= 0");
+    check_start(gap);
 
     // From here on in the units L and T; `target` is the mean pressure or gap.
     const bool      fixed_load = control == Control::mean_pressure;

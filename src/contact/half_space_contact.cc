@@ -193,11 +193,7 @@ namespace penny
                                            const ContactSolverControl &control,
                                            const GridField            &initial_gap) const
   {
-    // A gap that does not fit the grid, or is negative or not finite: minimise names the fault.
-    if (on_any_rank(transform_, initial_gap.size() != heights_.size() ||
-                                    !std::all_of(initial_gap.begin(), initial_gap.end(),
-                                                 [](double g) { return g >= 0 && std::isfinite(g); })))
-      return minimise(control_kind, value, control, initial_gap);
+    check_start(initial_gap); // before the halved grid clips it
     GridField restricted = resampled(transform_, *coarse_transform, initial_gap);
     for (double &g : restricted)
       g = std::max(g, 0.);

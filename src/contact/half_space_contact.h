@@ -122,6 +122,8 @@ namespace penny
     };
     ContactSolution minimise(Control control, double value, const ContactSolverControl &solver,
                              GridField gap) const;
+    // std::invalid_argument unless `gap` fits the grid and is finite and >= 0.
+    void            check_start(const GridField &gap) const;
     ContactSolution nested(Control control, double value, const ContactSolverControl &solver,
                            const GridField &initial_gap) const;
 
