@@ -133,12 +133,11 @@ namespace penny
     // A rank may hold no rows: whether a gap was given is decided over all ranks.
     const bool given = on_any_rank(transform_, !initial_gap.empty());
     if (given && coarse && adhesion_.active())
-      return nested(Control::mean_pressure, mean_pressure, control, initial_gap);
+      return solve_from(Control::mean_pressure, mean_pressure, control, initial_gap,
+                        nested_start(Control::mean_pressure, mean_pressure, control, initial_gap));
     if (given || !coarse || adhesion_.active())
-      {
-        GridField gap = given ? initial_gap : GridField(heights_.size(), 0.);
-        return minimise(Control::mean_pressure, mean_pressure, control, std::move(gap));
-      }
+      return solve_from(Control::mean_pressure, mean_pressure, control,
+                        given ? initial_gap : GridField(heights_.size(), 0.), std::nullopt);
     // Only a start: its accuracy beyond the interpolation's is wasted. Its
     // failure is the halved grid's, with that grid's tolerance.
     const ContactSolution start = [&] {
@@ -160,11 +159,7 @@ namespace penny
                         grid.nx, grid.ny));
         }
     }();
-    ContactSolution solution   = minimise(Control::mean_pressure, mean_pressure, control,
-                                          interpolated(*coarse_transform, start.gap, transform_));
-    solution.coarse_iterations = (start.iterations + start.coarse_iterations) *
-                                 coarse_transform->grid().n_points() / transform_.grid().n_points();
-    return solution;
+    return solve_from(Control::mean_pressure, mean_pressure, control, {}, start);
   }
 
   ContactSolution HalfSpaceContact::solve_at_mean_gap(const double                mean_gap,
@@ -175,45 +170,52 @@ namespace penny
       throw std::invalid_argument(
           formatted("contact solver: the mean gap %g m is outside the allowed range (0, inf)", mean_gap));
     const bool given = on_any_rank(transform_, !initial_gap.empty());
-    if (given && coarse && adhesion_.active())
-      return nested(Control::mean_gap, mean_gap, control, initial_gap);
-    GridField    gap     = given ? initial_gap : GridField(heights_.size(), 0.);
-    const double current = on_any_rank(transform_, gap.size() != heights_.size()) ? 0 : mean(transform_, gap);
-    for (double &g : gap)
-      g = current > 0 ? g * mean_gap / current : mean_gap;
-    return minimise(Control::mean_gap, mean_gap, control, std::move(gap));
+    return solve_from(Control::mean_gap, mean_gap, control,
+                      given ? initial_gap : GridField(heights_.size(), 0.),
+                      given && coarse && adhesion_.active()
+                          ? nested_start(Control::mean_gap, mean_gap, control, initial_gap)
+                          : std::nullopt);
   }
 
-  // With adhesion, from a given gap: the problem on the halved grid first,
-  // from the given gap restricted to it, to the larger of the tolerance and
-  // 1e-6 (recursively), then this grid from that gap interpolated. The given
-  // gap itself is the start where the halved problem has no solution (it can
-  // pull off or fail to converge where this one does not).
-  ContactSolution HalfSpaceContact::nested(const Control control_kind, const double value,
-                                           const ContactSolverControl &control,
-                                           const GridField            &initial_gap) const
+  // With adhesion, the start from a given gap: the problem on the halved grid
+  // from the given gap restricted to it, solved to the larger of the
+  // tolerance and 1e-6 (recursively). None where the halved problem has no
+  // solution (it can pull off or fail to converge where this one does not).
+  std::optional<ContactSolution> HalfSpaceContact::nested_start(const Control               control_kind,
+                                                                const double                value,
+                                                                const ContactSolverControl &control,
+                                                                const GridField            &initial_gap) const
   {
     check_start(initial_gap); // before the halved grid clips it
     GridField restricted = resampled(transform_, *coarse_transform, initial_gap);
     for (double &g : restricted)
       g = std::max(g, 0.);
-    const ContactSolverControl     coarse_control{control.max_iterations, std::max(control.tolerance, 1e-6)};
-    std::optional<ContactSolution> start;
+    const ContactSolverControl coarse_control{control.max_iterations, std::max(control.tolerance, 1e-6)};
     try
       {
-        start = control_kind == Control::mean_pressure
-                    ? coarse->solve(value, coarse_control, restricted)
-                    : coarse->solve_at_mean_gap(value, coarse_control, restricted);
+        return control_kind == Control::mean_pressure
+                   ? coarse->solve(value, coarse_control, restricted)
+                   : coarse->solve_at_mean_gap(value, coarse_control, restricted);
       }
     catch (const std::runtime_error &)
       {
+        return std::nullopt;
       }
-    GridField gap = start ? interpolated(*coarse_transform, start->gap, transform_) : initial_gap;
-    for (double &g : gap)
-      g = std::max(g, 0.);
+  }
+
+  // The solve on this grid from the halved grid's solution `start`
+  // interpolated (bilinear: it stays >= 0), or from `gap` where there is
+  // none; at a prescribed mean gap scaled to it first.
+  ContactSolution HalfSpaceContact::solve_from(const Control control_kind, const double value,
+                                               const ContactSolverControl &control, GridField gap,
+                                               const std::optional<ContactSolution> &start) const
+  {
+    if (start)
+      gap = interpolated(*coarse_transform, start->gap, transform_);
     if (control_kind == Control::mean_gap)
       {
-        const double current = mean(transform_, gap);
+        const double current =
+            on_any_rank(transform_, gap.size() != heights_.size()) ? 0 : mean(transform_, gap);
         for (double &g : gap)
           g = current > 0 ? g * value / current : value;
       }

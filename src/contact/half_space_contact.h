@@ -29,6 +29,7 @@
 #include "numerics/solver_failure.h"
 
 #include <memory>
+#include <optional>
 #include <stdexcept>
 #include <vector>
 
@@ -123,9 +124,12 @@ namespace penny
     ContactSolution minimise(Control control, double value, const ContactSolverControl &solver,
                              GridField gap) const;
     // std::invalid_argument unless `gap` fits the grid and is finite and >= 0.
-    void            check_start(const GridField &gap) const;
-    ContactSolution nested(Control control, double value, const ContactSolverControl &solver,
-                           const GridField &initial_gap) const;
+    void                           check_start(const GridField &gap) const;
+    std::optional<ContactSolution> nested_start(Control control, double value,
+                                                const ContactSolverControl &solver,
+                                                const GridField            &initial_gap) const;
+    ContactSolution solve_from(Control control, double value, const ContactSolverControl &solver,
+                               GridField gap, const std::optional<ContactSolution> &start) const;
 
     const FourierTransform &transform_;
     GridField               heights_;
