@@ -182,8 +182,12 @@ int main(int argc, char **argv)
       if (adhesive && !sizes.empty())
         throw std::invalid_argument(
             "benchmark_contact: grid sizes are for the adhesionless table, not 'adhesive'");
+      if (adhesive && how == SplitTransform::fftw_mpi)
+        throw std::invalid_argument(
+            "benchmark_contact: 'fftw-mpi' splits the adhesionless table's grids, not 'adhesive' "
+            "(one rank)");
       if (adhesive)
-        adhesive_benchmark(problems, planning, how);
+        adhesive_benchmark(problems, planning);
       if (sizes.empty() && !adhesive)
         sizes = {256, 512, 1024, 2048, 4096};
 

@@ -29,5 +29,5 @@ namespace penny::benchmark
 
   // The adhesive table: `cases` among "johnson", "sphere", "random" (all if
   // empty); prints on rank 0.
-  void adhesive_benchmark(const std::vector<std::string> &cases, Planning planning, SplitTransform how);
+  void adhesive_benchmark(const std::vector<std::string> &cases, Planning planning);
 } // namespace penny::benchmark

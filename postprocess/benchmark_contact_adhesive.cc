@@ -186,8 +186,7 @@ namespace penny::benchmark
     }
   } // namespace
 
-  void adhesive_benchmark(const std::vector<std::string> &cases, const Planning planning,
-                          const SplitTransform)
+  void adhesive_benchmark(const std::vector<std::string> &cases, const Planning planning)
   {
     int ranks;
     MPI_Comm_size(MPI_COMM_WORLD, &ranks);
