@@ -11,7 +11,8 @@
 
 namespace penny
 {
-  void RandomSurfaceInput::sections(Sections &sections, const bool one_spectrum)
+  void RandomSurfaceInput::sections(Sections &sections, const bool one_spectrum,
+                                    const unsigned int fewest_realisations)
   {
     material_section(sections, material);
     roughness_section(sections, roughness, one_spectrum);
@@ -24,7 +25,7 @@ namespace penny
           "Period L/lambda0", surfaces.period, 1, at_least(1),
           "Side of the periodic square in units of the longest wavelength lambda0 = 2 pi/q0 (Roughness). "
           "The shortest wavelength lambda0/zeta must span at least 4 grid points. Units: none.");
-      entries.integer("Realisations", surfaces.n_realisations, 16u, 1u, 1000000u,
+      entries.integer("Realisations", surfaces.n_realisations, 16u, fewest_realisations, 1000000u,
                       "Independent surfaces, spread over the MPI ranks. Units: none.");
       entries.integer(
           "Seed", surfaces.seed, std::uint64_t(1), std::uint64_t(0),
@@ -66,6 +67,15 @@ namespace penny
     check_grid_memory(surfaces.n_points, bytes_per_point,
                       "Random surfaces/Grid points per side = " + std::to_string(surfaces.n_points),
                       communicator);
+  }
+
+  void check_summit_spectrum(const FieldMoments &pressure, const std::string &choice)
+  {
+    if (!summits_have_expectation(pressure))
+      throw InputError(choice + " leaves the grid no wavevectors, or wavevectors of one length only, "
+                                "between q0 and zeta q0: a spectrum too narrow for summit statistics; the "
+                                "allowed range: a band holding wavevectors of two lengths at least (zeta >= "
+                                "sqrt(2) at Period L/lambda0 = 1)");
   }
 
   Estimate mean_over(const std::vector<std::vector<double>> &rows, const std::size_t column)

@@ -29,14 +29,15 @@ namespace penny
   // What the scenes on sampled surfaces read: the solid (Material), the
   // spectrum (Roughness; only its q0 and h0/lambda0 for a scene that samples
   // power laws of its own H and zeta, `one_spectrum` false) and the grid and
-  // realisations (Random surfaces).
+  // realisations (Random surfaces; at least `fewest_realisations`, 2 for a
+  // scene whose verdict needs the standard error of a mean).
   struct RandomSurfaceInput
   {
     MaterialParameters      material;
     RoughnessParameters     roughness;
     RandomSurfaceParameters surfaces;
 
-    void sections(Sections &sections, bool one_spectrum = true);
+    void sections(Sections &sections, bool one_spectrum = true, unsigned int fewest_realisations = 1);
   };
 
   // The power laws a scene on sampled surfaces studies: the entries 'Hurst
@@ -62,6 +63,12 @@ namespace penny
   // each rank of the run may take. Collective on `communicator`.
   void check_grid_memory(const RandomSurfaceParameters &surfaces, double bytes_per_point,
                          MPI_Comm communicator);
+
+  // Throws InputError naming `choice` (the entries that chose the spectrum
+  // and the grid, as "entry = value ...") unless the sampled lattice's
+  // `pressure` moments admit the Kac-Rice summit expectations: a band of
+  // wavevectors of one length (or none) has no summit statistics.
+  void check_summit_spectrum(const FieldMoments &pressure, const std::string &choice);
 
   // Mean and standard error of the mean over the rows' `column` (one row a realisation).
   Estimate mean_over(const std::vector<std::vector<double>> &rows, std::size_t column);

@@ -88,10 +88,9 @@ namespace penny
 
     HessianVariances hessian_variances(const FieldMoments &m)
     {
-      const HessianVariances variances{(m.m4 + m.m22) / 2, (m.m4 - m.m22) / 2, m.m22};
-      if (!(variances.s > m.m2 * m.m2 / m.m0 && variances.d1 > 0 && variances.d2 > 0))
+      if (!summits_have_expectation(m))
         throw std::domain_error("summit statistics need (m4 + m22)/2 > m2^2/m0 and 0 < m22 < m4");
-      return variances;
+      return {(m.m4 + m.m22) / 2, (m.m4 - m.m22) / 2, m.m22};
     }
 
     // Mean and standard error of the mean of M numbers.
@@ -325,6 +324,11 @@ namespace penny
         ensemble.bins.push_back(bin);
       }
     return ensemble;
+  }
+
+  bool summits_have_expectation(const FieldMoments &m)
+  {
+    return (m.m4 + m.m22) / 2 > m.m2 * m.m2 / m.m0 && m.m22 > 0 && m.m22 < m.m4;
   }
 
   ExpectedSummits expected_summits(const FieldMoments &m)

@@ -110,6 +110,10 @@ namespace penny
   // m4/(6 pi sqrt(3) m2) and mean curvature (8/3) sqrt(m4/pi), the consistent
   // convention's eta and 1/R_p. Needs (m4 + m22)/2 > m2^2/m0 (a spectrum wider
   // than one ring).
+  // Whether `moments` admit these expectations: (m4 + m22)/2 > m2^2/m0 and
+  // 0 < m22 < m4 (false for a lattice whose wavevectors all have one length).
+  bool summits_have_expectation(const FieldMoments &moments);
+
   struct ExpectedSummits
   {
     double density;        // summits per area
