@@ -10,6 +10,8 @@
 #   kill-before-swap    SIGKILL with the results staged, before the swap
 #   kill-after-swap     SIGKILL after the swap, before the old results go
 #   kill-mid-run        SIGKILL at several moments of a long run
+#   removal-cut-short   what a removal of a staging folder leaves when a kill
+#                       cuts it short: files, and no marker (hostile campaign D3)
 #   concurrent-runs     a second run on a folder a run holds, and runs started together
 #   planted-links       symbolic links at the lock and staging names
 #   input-in-output     an output folder that holds the parameter file or the working folder
@@ -102,6 +104,15 @@ EOF
     "$penny" small.prm > stdout 2> stderr || fail "the run after the kill failed"
     [ "$(staging_folders)" -eq 0 ] || fail "the next run left the stale staging folder"
     complete_set || fail "the run after the kill left an incomplete set"
+    ;;
+  removal-cut-short)
+    # An interrupted run's removal of its staging folder (or of the previous
+    # results swapped into it) can lose the marker before the files.
+    cp -a out .out.staging-Ab12Cd
+    rm .out.staging-Ab12Cd/.penny-results
+    "$penny" small.prm > stdout 2> stderr || fail "the run after the cut-short removal failed"
+    [ "$(staging_folders)" -eq 0 ] || fail "the next run left the stale staging folder: $(ls -A)"
+    complete_set || fail "the run after the cut-short removal left an incomplete set"
     ;;
   kill-mid-run)
     "$penny" long.prm > stdout 2> stderr || fail "the long run failed"

@@ -183,16 +183,16 @@ namespace penny
                                    "replaces its output folder whole)");
       }
 
-    // Staging folders of runs that were killed (empty, or penny's results):
-    // no live run uses them while we hold the lock.
+    // Staging folders of runs that were killed: empty, penny's results, or
+    // what is left of them when the removal was cut short (its marker may
+    // have gone first). No live run uses them while we hold the lock.
     const std::string     prefix = staging_prefix(target);
     std::vector<fs::path> stale;
     for (const auto &item : fs::directory_iterator(parent, error))
       {
         const std::string name = item.path().filename().string();
         if (name.size() == prefix.size() + 6 && name.compare(0, prefix.size(), prefix) == 0 &&
-            !item.is_symlink() && item.is_directory() &&
-            (fs::is_empty(item.path(), error) || fs::exists(item.path() / marker, error)))
+            !item.is_symlink() && item.is_directory())
           stale.push_back(item.path());
       }
     for (const fs::path &path : stale)
