@@ -39,10 +39,23 @@ A block whose runs are not all in this report is kept as it is (each block
 names the commit it came from) and listed on the screen. The files after
 --documents run up to the next option: name the runs before it.
 
+Each run and each figure script runs in a session of its own. SIGINT
+(Ctrl-C), SIGTERM or SIGHUP stops the report: it stops the current run
+(SIGTERM to its session, so penny removes its staging folder; SIGKILL 10 s
+later), writes no record for it, says which records it kept, and exits
+with 128 + the signal's number; the same command resumes. A report killed
+by SIGKILL takes its run with it too (the run's first process gets SIGTERM
+when the report dies), and the next report into the same folder first ends
+whatever of a killed report's session is still running
+(OUT/runs/NAME/session.json names it).
+
 Exit status: 0 if every run passed and its figures were drawn, 1 if any
-failed, stopped with an error or lost a figure, 2 for bad arguments."""
+failed, stopped with an error or lost a figure, 2 for bad arguments, 128 + N
+when stopped by signal N."""
 import argparse
+import contextlib
 import csv
+import ctypes
 import fcntl
 import hashlib
 import html
@@ -51,9 +64,11 @@ import os
 import pathlib
 import platform
 import re
+import signal
 import subprocess
 import sys
 import time
+import urllib.parse
 
 REPOSITORY = pathlib.Path(__file__).resolve().parent.parent
 # Where the benchmark scripts are that the report runs by name (benchmark_X.sh BUILD OUT).
@@ -78,6 +93,131 @@ PAPER_CLAIMS = {
     "elliptical-summits": ("the paper's remark on elliptical summits (Galin)", "8"),
     "bem-bisinusoid": ("gap closure 1 - p_bar/p* = psi (2 pi)^(2/5) alpha^(4/5) near full contact", "9"),
 }
+
+
+class Interrupted(Exception):
+    """A signal that stops the report."""
+
+    def __init__(self, number):
+        super().__init__(signal.Signals(number).name)
+        self.number = number
+
+
+STOPPING_SIGNALS = (signal.SIGINT, signal.SIGTERM, signal.SIGHUP)
+
+
+def stop_on_signals():
+    """SIGINT, SIGTERM and SIGHUP raise Interrupted; the first one only (the stop then runs undisturbed)."""
+    def interrupted(number, _):
+        for each in STOPPING_SIGNALS:
+            signal.signal(each, signal.SIG_IGN)
+        raise Interrupted(number)
+    for each in STOPPING_SIGNALS:
+        if signal.getsignal(each) != signal.SIG_IGN:  # a signal the caller ignores (nohup) stays ignored
+            signal.signal(each, interrupted)
+
+
+def process_status(pid):
+    """The fields of /proc/PID/stat after the command's name (state first), or None if there is no such process."""
+    try:
+        return pathlib.Path(f"/proc/{pid}/stat").read_text().rsplit(")", 1)[1].split()
+    except (OSError, IndexError):
+        return None
+
+
+def start_time(pid):
+    """When process pid started (clock ticks after boot), None if there is none."""
+    fields = process_status(pid)
+    return int(fields[19]) if fields else None
+
+
+def session_members(session):
+    """The live processes of a session (Open MPI gives each rank a process group of its own, not a session)."""
+    members = []
+    for entry in os.listdir("/proc"):
+        fields = process_status(entry) if entry.isdigit() else None
+        if fields and fields[0] != "Z" and int(fields[3]) == session:
+            members.append(int(entry))
+    return members
+
+
+def stop_session(session, grace=10):
+    """Ends every process of a session: SIGTERM (penny removes its staging folder, mpirun passes it on to the
+    ranks), SIGKILL to what is left after `grace` seconds; returns when none is left."""
+    deadline, sent = time.time() + grace, set()
+    while members := session_members(session):
+        number = signal.SIGTERM if time.time() < deadline else signal.SIGKILL
+        for pid in members:
+            if (pid, number) not in sent:
+                with contextlib.suppress(ProcessLookupError):
+                    os.kill(pid, number)
+                sent.add((pid, number))
+        time.sleep(0.05)
+
+
+def end_with_the_report(report=os.getpid(), prctl=ctypes.CDLL(None, use_errno=True).prctl):
+    """In a child before its program starts: SIGTERM when the report dies, even by SIGKILL (PR_SET_PDEATHSIG)."""
+    prctl(1, signal.SIGTERM)
+    if os.getppid() != report:  # the report died before the request
+        os._exit(1)
+    signal.pthread_sigmask(signal.SIG_UNBLOCK, STOPPING_SIGNALS)
+
+
+# The first process of a run's session: runs the command in its process group and, on SIGTERM (the report's
+# death, by PR_SET_PDEATHSIG, or its stop), passes SIGTERM to the group (mpirun passes it on to its ranks,
+# which have groups of their own; xvfb-run's X server is in the group) and waits for the command.
+SESSION_KEEPER = 'trap \'trap "" TERM; kill -TERM -- -$$\' TERM; "$@" & wait $!; status=$?; wait; exit $status'
+
+
+def in_session(command, folder, stdout, stderr, environment=None, timeout=None):
+    """Runs a command in a session of its own, named in folder/session.json while it runs; its exit status
+    (128 + N if a signal N ended it) and resource usage. An exception (an interruption, the timeout) stops the
+    whole session before it goes on."""
+    command = ["bash", "-c", SESSION_KEEPER, "session-keeper", *command]
+    # Held back while the child starts: an interruption then finds it in the session marker's care.
+    signal.pthread_sigmask(signal.SIG_BLOCK, STOPPING_SIGNALS)
+    try:
+        process = subprocess.Popen(command, cwd=folder, stdout=stdout, stderr=stderr, env=environment,
+                                   start_new_session=True, preexec_fn=end_with_the_report)
+    except BaseException:
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, STOPPING_SIGNALS)
+        raise
+    marker = folder / "session.json"
+    try:
+        signal.pthread_sigmask(signal.SIG_UNBLOCK, STOPPING_SIGNALS)
+        write_whole(marker, json.dumps({"session": process.pid, "start": start_time(process.pid)}) + "\n")
+        start = time.time()
+        while True:
+            pid, status, usage = os.wait4(process.pid, os.WNOHANG)
+            if pid:
+                break
+            if timeout and time.time() - start > timeout:
+                raise subprocess.TimeoutExpired(command, timeout)
+            time.sleep(0.05)
+    except BaseException:
+        stop_session(process.pid)
+        with contextlib.suppress(ChildProcessError):
+            os.waitpid(process.pid, 0)
+        marker.unlink(missing_ok=True)
+        raise
+    stop_session(process.pid)  # what the command left running behind it
+    marker.unlink(missing_ok=True)
+    return status, usage
+
+
+def stop_left_sessions(out):
+    """Ends the sessions a killed report left running (each named by runs/NAME/session.json)."""
+    for marker in sorted(out.glob("runs/*/session.json")):
+        with contextlib.suppress(OSError, ValueError, KeyError, TypeError):
+            left = json.loads(marker.read_text())
+            session = int(left["session"])
+            leader = start_time(session)
+            # A live process of that number that started at another time is not the session's.
+            if leader is None or leader == left["start"]:
+                if session_members(session):
+                    print(f"{marker.parent.name}: stopping the run a killed report left behind", flush=True)
+                stop_session(session)
+        marker.unlink(missing_ok=True)
 
 
 def refuse(message):
@@ -173,10 +313,15 @@ def generated_blocks(text):
     return blocks
 
 
+def text_of(path):
+    """A file's text; bytes that are not UTF-8 (a Latin-1 comment, which penny accepts) shown as U+FFFD."""
+    return path.read_bytes().decode("utf-8", errors="replace")
+
+
 def scene_of(prm):
     if prm.suffix == ".sh":
         return "benchmark"
-    match = re.search(r"^\s*set\s+Scene\s*=\s*(\S+)", prm.read_text(), re.MULTILINE)
+    match = re.search(r"^\s*set\s+Scene\s*=\s*(\S+)", text_of(prm), re.MULTILINE)
     return match.group(1) if match else "penny-gap"
 
 
@@ -247,11 +392,10 @@ def run(arguments, prm, key, folder):
     environment = dict(os.environ, OMPI_ALLOW_RUN_AS_ROOT="1", OMPI_ALLOW_RUN_AS_ROOT_CONFIRM="1")
     load_before, start = load_average(), time.time()
     with open(folder / "stdout.txt", "w") as stdout, open(folder / "stderr.txt", "w") as stderr:
-        process = subprocess.Popen(command, cwd=folder, stdout=stdout, stderr=stderr, env=environment)
-        _, status, usage = os.wait4(process.pid, 0)
+        status, usage = in_session(command, folder, stdout, stderr, environment)
     wall = time.time() - start
-    output = (folder / "stdout.txt").read_text()
-    errors = (folder / "stderr.txt").read_text()
+    output = text_of(folder / "stdout.txt")
+    errors = text_of(folder / "stderr.txt")
     code = os.waitstatus_to_exitcode(status)
     passed = re.search(r"^PASS: (.*)$", output, re.MULTILINE)
     failed = re.search(r"^penny: FAIL: (.*)$", errors, re.MULTILINE)
@@ -262,21 +406,24 @@ def run(arguments, prm, key, folder):
     else:
         last = [line for line in errors.splitlines() if line.strip()]
         verdict, message = "ERROR", (last[-1] if last else f"exit status {code}")
-    results = re.search(r"^Results in (\S+?)/?:", output, re.MULTILINE)
+    # penny's last line names the folder: "Results in FOLDER/: FILE ..." (FOLDER may hold blanks).
+    results = re.search(r"^Results in (.+)/: ", output, re.MULTILINE)
     results = "results" if prm.suffix == ".sh" else results.group(1) if results else None
-    # The figures, from a run that finished; a script that fails is reported.
+    # The figures, from a run that finished; a script that fails, or a folder not found, is reported.
     figure_errors = []
-    if code == 0 and results:
+    if code == 0 and not (results and (folder / results).is_dir()):
+        figure_errors.append("no results folder named on the screen: figures not drawn")
+    elif code == 0:
         with open(folder / "figures.txt", "w") as log:
             for command in figure_commands(scene_of(prm), folder / results):
                 # Xvfb now and then gives pvpython no window (tests/check_paraview.sh): three tries.
                 for _ in range(3 if command[0] == "xvfb-run" else 1):
-                    drawn = subprocess.run(command, cwd=folder, stdout=log, stderr=subprocess.STDOUT, timeout=1800)
-                    if drawn.returncode == 0:
+                    status, _ = in_session(command, folder, log, subprocess.STDOUT, timeout=1800)
+                    if status == 0:
                         break
-                if drawn.returncode != 0:
+                if status != 0:
                     script = next(word for word in command if word.endswith(".py"))
-                    figure_errors.append(f"{pathlib.Path(script).name} exit {drawn.returncode}")
+                    figure_errors.append(f"{pathlib.Path(script).name} exit {os.waitstatus_to_exitcode(status)}")
     return {"key": key, "scene": scene_of(prm), "verdict": verdict, "message": message, "exit": code,
             "wall time (s)": round(wall, 2), "peak memory (MB)": round(usage.ru_maxrss / 1024),
             "ranks": "its own" if prm.suffix == ".sh" else arguments.ranks, "load average before": load_before,
@@ -346,7 +493,7 @@ def write_report(arguments, records, header):
                 summary, "", "## The paper's claims", "", markdown_table(claim_columns, claims), "",
                 "## Every run", "", markdown_table(run_columns, rows), "",
                 "Each run's screen output, tables and fields are in runs/NAME/.", ""]
-    markdown += ["## Figures", ""] + [f"![{name}]({f})" for name, f in pictures] if pictures else []
+    markdown += ["## Figures", ""] + [f"![{name}]({urllib.parse.quote(f)})" for name, f in pictures] if pictures else []
     write_whole(arguments.out / "report.md", "\n".join(markdown) + "\n")
     page = ["<!DOCTYPE html><html><head><meta charset='utf-8'><title>penny-verifier: verification report</title>",
             "<style>body{font-family:sans-serif} table{border-collapse:collapse} td,th{border:1px solid #999;"
@@ -355,7 +502,8 @@ def write_report(arguments, records, header):
             *[f"<li>{html.escape(k)}: {html.escape(str(v))}</li>" for k, v in header.items()],
             f"</ul><p>{summary}</p><h2>The paper's claims</h2>", html_table(claim_columns, claims),
             "<h2>Every run</h2>", html_table(run_columns, rows)]
-    page += ["<h2>Figures</h2>"] + [f"<p>{html.escape(n)}<br><img src='{html.escape(f)}'></p>" for n, f in pictures]
+    page += ["<h2>Figures</h2>"] + [f"<p>{html.escape(n)}<br><img src='{html.escape(urllib.parse.quote(f))}'></p>"
+                                    for n, f in pictures]
     write_whole(arguments.out / "report.html", "\n".join(page) + "</body></html>\n")
     if arguments.documents:
         write_documents(arguments, header, summary, markdown_table(claim_columns, claims), records)
@@ -396,7 +544,7 @@ def write_documents(arguments, header, summary, claims_table, records):
         table = folder / (record["results"] or ".") / path
         if not table.is_file():
             return None
-        text = table.read_text().rstrip("\n")
+        text = text_of(table).rstrip("\n")
         rows = list(csv.reader(text.splitlines()))
         if table.suffix == ".csv" and rows:
             body = [markdown_table(rows[0], [[short_number(cell) for cell in row] for row in rows[1:]])]
@@ -422,6 +570,7 @@ def write_documents(arguments, header, summary, claims_table, records):
 
 
 def main():
+    stop_on_signals()
     arguments = read_arguments()
     files = selected_files(arguments)
     if not files:
@@ -433,11 +582,29 @@ def main():
         fcntl.flock(lock, fcntl.LOCK_EX | fcntl.LOCK_NB)
     except BlockingIOError:
         refuse(f"another report is running in {arguments.out}")
+    stop_left_sessions(arguments.out)
     revision = commit(arguments.build)
     header = {"commit": revision, "machine": machine(), "load average at start": load_average(),
               "parameter files": str(arguments.prms), "ranks per run": arguments.ranks,
               "started": time.strftime("%Y-%m-%d %H:%M:%S")}
-    records, spent, ran = [], 0.0, 0
+    records = []
+    try:
+        run_all(arguments, files, revision, records)
+    except Interrupted as interruption:
+        finished = [name for name, _, _ in records]
+        kept = f"kept the records of {', '.join(finished)}" if finished else "no run of this call finished"
+        sys.stderr.write(f"verification_report: stopped by {interruption} (its run stopped, not recorded); {kept} "
+                         f"in {arguments.out / 'runs'}; the same command resumes\n")
+        return 128 + interruption.number
+    header["load average at end"] = load_average()
+    all_passed = write_report(arguments, records, header)
+    print(f"Report: {arguments.out / 'report.md'} and report.html")
+    return 0 if all_passed else 1
+
+
+def run_all(arguments, files, revision, records):
+    """Runs the files, or takes their records; appends (name, folder, record) to `records` as each finishes."""
+    spent, ran = 0.0, 0
     for index, prm in enumerate(files):
         name, folder = prm.stem, arguments.out / "runs" / prm.stem
         key = {"commit": revision, "parameters": hashlib.sha256(prm.read_bytes()).hexdigest(),
@@ -462,14 +629,12 @@ def main():
                 (folder / stale).unlink(missing_ok=True)
         record = run(arguments, prm, key, folder)
         spent, ran = spent + record["wall time (s)"], ran + 1
-        write_whole(folder / "record.json", json.dumps(record, indent=1) + "\n")
+        # A run that found its folder held did not run: it gets no record (the next call runs it).
+        if "is in use by another penny run" not in record["message"]:
+            write_whole(folder / "record.json", json.dumps(record, indent=1) + "\n")
         print(f"    {record['verdict']}: {record['message']} ({record['wall time (s)']:.1f} s)"
               + "".join(f"; figure failed: {e}" for e in record["figure errors"]), flush=True)
         records.append((name, folder, record))
-    header["load average at end"] = load_average()
-    all_passed = write_report(arguments, records, header)
-    print(f"Report: {arguments.out / 'report.md'} and report.html")
-    return 0 if all_passed else 1
 
 
 if __name__ == "__main__":
@@ -478,3 +643,6 @@ if __name__ == "__main__":
     except (OSError, subprocess.SubprocessError) as error:
         sys.stderr.write(f"verification_report: error: {error}\n")
         sys.exit(1)
+    except Interrupted as interruption:
+        sys.stderr.write(f"verification_report: stopped by {interruption} before any run\n")
+        sys.exit(128 + interruption.number)

@@ -51,6 +51,20 @@ done
   fail "exit status $? with a relative report folder (a figure lost?)"
 [ -n "$(find "$work/relative/runs/bem-westergaard" -name "*.png")" ] || fail "no figure with a relative report folder"
 
+# A Latin-1 byte in a comment (penny accepts it), found in --prms and named; an output folder with a blank
+# in its name: its figures drawn and its results named (hostile campaign D4, D8).
+mkdir "$work/odd"
+printf '# caf\xe9: a Latin-1 comment\n' | cat - "$scenes/gap-size-adhesionless.prm" > "$work/odd/gap-size-adhesionless.prm"
+sed 's|^\( *set Directory *=\).*|\1 output/penny gap|' "$scenes/penny-gap.prm" > "$work/odd/penny-gap-blank.prm"
+run "$work/odd-report" --prms "$work/odd" || fail "exit status $? on a Latin-1 comment (found in --prms)"
+run "$work/odd-report" --prms "$work/odd" --rerun gap-size-adhesionless penny-gap-blank ||
+  fail "exit status $? on a Latin-1 comment and a blank in the output folder (named)"
+grep -q '"results": "output/penny gap"' "$work/odd-report/runs/penny-gap-blank/record.json" ||
+  fail "the results folder with a blank is not recorded"
+[ -n "$(find "$work/odd-report/runs/penny-gap-blank/output/penny gap" -name "*.png")" ] ||
+  fail "no figure drawn for an output folder with a blank"
+grep -q "^2 of 2 runs passed" "$work/odd-report/report.md" || fail "the odd files are not reported as passed"
+
 mkdir "$work/broken"
 sed 's/^\( *set Tolerance *=\).*/\1 1e-12/' "$scenes/gap-size-adhesionless.prm" > "$work/broken/gap-size-adhesionless.prm"
 run "$work/bad" --prms "$work/broken"
