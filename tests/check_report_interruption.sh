@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Usage: check_report_interruption.sh BUILD_DIR REPORT_SCRIPT SCENES_DIR TRIALS RANKS [SEED]
+# Usage: check_report_interruption.sh BUILD_DIR REPORT_SCRIPT SCENES_DIR TRIALS RANKS [SEED [NAME ...]]
 # The verification report stopped at random moments, then resumed (issue 68,
 # D5 and D6). Each trial starts the report in a session of its own on three
 # cheap runs (penny-gap, gap-size-adhesionless, and penny-gap refined once
@@ -10,24 +10,32 @@
 # first, without a Python traceback; no process of the report is left
 # (SIGKILL's children end within 15 s); every record is of a run that
 # finished and passed, with its complete results. Last, an uninterrupted call
-# resumes and reports the same verdicts as a report never interrupted.
+# resumes and reports the same verdicts as a report never interrupted. With
+# NAMEs, the runs are SCENES_DIR/NAME.prm instead (issue 68's acceptance:
+# prms/ penny-uniform gap-size-adhesionless, 20 trials).
 set -u
 build=$1 report=$2 scenes=$3 trials=$4 ranks=$5 seed=${6:-$RANDOM}
+shift $(($# < 6 ? $# : 6))
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 fail() { echo "FAIL (seed $seed): $*"; cat "$work/log" 2> /dev/null; exit 1; }
 
 mkdir "$work/prms"
-cp "$scenes/penny-gap.prm" "$scenes/gap-size-adhesionless.prm" "$work/prms/"
-sed 's/set Directory = out/set Directory = long/' "$scenes/results-long.prm" > "$work/prms/penny-gap-long.prm"
-runs="penny-gap gap-size-adhesionless penny-gap-long"
+if [ $# -gt 0 ]; then
+  runs="$*"
+  for name in $runs; do cp "$scenes/$name.prm" "$work/prms/" || fail "no $scenes/$name.prm"; done
+else
+  cp "$scenes/penny-gap.prm" "$scenes/gap-size-adhesionless.prm" "$work/prms/"
+  sed 's/set Directory = out/set Directory = long/' "$scenes/results-long.prm" > "$work/prms/penny-gap-long.prm"
+  runs="penny-gap gap-size-adhesionless penny-gap-long"
+fi
 report() { /usr/bin/python3 "$report" "$build" "$@" -np "$ranks" --prms "$work/prms" $runs; }
-verdicts() { grep -E '^\| (penny-gap|gap-size-adhesionless|penny-gap-long) \|' "$1/report.md" | cut -d'|' -f2-4; }
+verdicts() { grep -E "^\| (${runs// /|}) \|" "$1/report.md" | cut -d'|' -f2-4; }
 
 report "$work/reference" > "$work/log" 2>&1 || fail "the uninterrupted report failed"
 reference=$(verdicts "$work/reference")
-[ "$(echo "$reference" | grep -c PASS)" = 3 ] || fail "the uninterrupted report does not pass its three runs"
+[ "$(echo "$reference" | grep -c PASS)" = "$(echo $runs | wc -w)" ] || fail "the uninterrupted report does not pass every run"
 duration=$(/usr/bin/python3 -c "import json, glob; print(sum(json.load(open(f))['wall time (s)'] + 1 for f in glob.glob('$work/reference/runs/*/record.json')))")
 
 # The processes whose working folder lies in the report's folder.

@@ -219,6 +219,31 @@ BOOST_AUTO_TEST_CASE(exact_gap_law_properties)
   BOOST_TEST(penny::exact_gap_law(0)(2.) == 2.);
 }
 
+// The paper's fit p_hat = c_hat^2/5 + 1/2 follows the exact branch within
+// 0.12 p0 from p_hat = 1.3 to 4, where its linear law pi c^2 = 3 pi R_p (P -
+// p0) is off by 0.35 p0 or more; summed over the summits the fit adds
+// (p0/2) erfc(x/sqrt 2)/2, x = p_bar + p0, to the linear law's area.
+BOOST_AUTO_TEST_CASE(fitted_gap_law_against_the_exact_branch_and_the_linear_law)
+{
+  for (const double adhesion : {0.5, 1., 3.})
+    {
+      const GapAreaLaw exact = exact_gap_law(adhesion), fitted = fitted_gap_law(adhesion),
+                       linear = linear_gap_law(adhesion);
+      for (double p_hat = 1.3; p_hat <= 4; p_hat += 0.1)
+        {
+          const double P = p_hat * adhesion;
+          BOOST_TEST(std::abs(exact(P) - fitted(P)) <= 0.12 * adhesion);
+          BOOST_TEST(exact(P) - linear(P) >= 0.35 * adhesion);
+        }
+      const GapPopulation gaps{std::sqrt(2 * M_PI), adhesion};
+      for (double p_bar = -2; p_bar <= 4; p_bar += 0.5)
+        BOOST_TEST(noncontact_area(gaps, fitted, p_bar) ==
+                       linear_law_noncontact_area(gaps, p_bar) +
+                           gaps.prefactor * adhesion / 4 * std::erfc((p_bar + adhesion) / std::sqrt(2.)),
+                   tt::tolerance(1e-10));
+    }
+}
+
 // Weak adhesion puts the stable gap millions of c_min out (the search had
 // stopped at 2^21 c_min): the exact law then tends to the adhesionless P.
 BOOST_AUTO_TEST_CASE(exact_gap_law_at_weak_adhesion)

@@ -64,6 +64,11 @@ namespace penny
     return [adhesion](const double P) { return P - adhesion; };
   }
 
+  GapAreaLaw fitted_gap_law(const double adhesion)
+  {
+    return [adhesion](const double P) { return P - adhesion / 2; };
+  }
+
   double integration_limit(const double adhesion, const double mean_pressure)
   {
     // Beyond P + p_bar = 12 (or 12 past the bulk when p_bar + p0 < 0) the

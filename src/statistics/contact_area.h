@@ -44,6 +44,11 @@ namespace penny
   // The paper's linear law pi c_t^2 = 3 pi R_p (P - p0); p0 = 0 is the exact
   // adhesionless law c_t^2 = 3 R_p P.
   GapAreaLaw linear_gap_law(double adhesion);
+  // The fit the paper derives that law from, p_hat = c_hat^2/5 + 1/2 (p_hat =
+  // P/p0, c_hat = c/c_min), with c_min^2 = (3/5) R_p p0: pi c_t^2 = 3 pi R_p
+  // (P - p0/2) for P >= p0. The linear law drops the p0/2, the gap of area
+  // (3/2) pi R_p p0 a summit holds at the threshold (doc/theory.md, section 1).
+  GapAreaLaw fitted_gap_law(double adhesion);
 
   // A_nc/A_0 by adaptive Gauss-Kronrod quadrature over P = p0 + t^2 (the
   // substitution smooths the square-root onset of the exact g at p0).
