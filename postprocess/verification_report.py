@@ -34,7 +34,9 @@ WHAT is
                        peak memory and ranks of those runs, with the commit;
     file NAME PATH     the file PATH of run NAME's results folder (a table
                        the scene wrote): a .csv as a table, a .md as it is,
-                       anything else verbatim in a code block.
+                       a .png (a figure) copied to figures/NAME-PATH beside
+                       the document and shown, anything else verbatim in a
+                       code block.
 A block whose runs are not all in this report is kept as it is (each block
 names the commit it came from) and listed on the screen. The files after
 --documents run up to the next option: name the runs before it.
@@ -165,8 +167,10 @@ def end_with_the_report(report=os.getpid(), prctl=ctypes.CDLL(None, use_errno=Tr
 
 # The first process of a run's session: runs the command in its process group and, on SIGTERM (the report's
 # death, by PR_SET_PDEATHSIG, or its stop), passes SIGTERM to the group (mpirun passes it on to its ranks,
-# which have groups of their own; xvfb-run's X server is in the group) and waits for the command.
-SESSION_KEEPER = 'trap \'trap "" TERM; kill -TERM -- -$$\' TERM; "$@" & wait $!; status=$?; wait; exit $status'
+# which have groups of their own; xvfb-run's X server is in the group), and 3 s later SIGKILL (pvpython
+# outlives a SIGTERM).
+SESSION_KEEPER = ('trap \'trap "" TERM; kill -TERM -- -$$; sleep 3; kill -KILL -- -$$\' TERM; '
+                  '"$@" & wait $!; status=$?; wait; exit $status')
 
 
 def in_session(command, folder, stdout, stderr, environment=None, timeout=None):
@@ -232,6 +236,7 @@ PARAVIEW_PICTURES = {
     "elliptical-gap": "paraview_elliptical_front.py",
     "random-contact": "paraview_random_contact.py",
     "periodic-gap": "paraview_periodic_gap.py",
+    "adhesive-random-contact": "paraview_adhesive_contact.py",
 }
 
 
@@ -414,11 +419,13 @@ def run(arguments, prm, key, folder):
     if code == 0 and not (results and (folder / results).is_dir()):
         figure_errors.append("no results folder named on the screen: figures not drawn")
     elif code == 0:
+        # The figures name the run's parameter file and commit in a corner (postprocess/results.py).
+        stamp = dict(os.environ, PENNY_PARAMETERS=str(prm.resolve()), PENNY_COMMIT=key["commit"])
         with open(folder / "figures.txt", "w") as log:
             for command in figure_commands(scene_of(prm), folder / results):
                 # Xvfb now and then gives pvpython no window (tests/check_paraview.sh): three tries.
                 for _ in range(3 if command[0] == "xvfb-run" else 1):
-                    status, _ = in_session(command, folder, log, subprocess.STDOUT, timeout=1800)
+                    status, _ = in_session(command, folder, log, subprocess.STDOUT, stamp, timeout=1800)
                     if status == 0:
                         break
                 if status != 0:
@@ -433,8 +440,12 @@ def run(arguments, prm, key, folder):
 
 def write_whole(path, text):
     """A file that is there complete or not at all (written beside, then renamed)."""
+    write_whole_bytes(path, text.encode())
+
+
+def write_whole_bytes(path, data):
     partial = path.with_name(path.name + ".partial")
-    partial.write_text(text)
+    partial.write_bytes(data)
     os.replace(partial, path)
 
 
@@ -539,11 +550,18 @@ def write_documents(arguments, header, summary, claims_table, records):
         return [f"From the verification report ({source}, {header['started']}):", "",
                 markdown_table(columns, table), ""]
 
-    def file(name, path):
+    def file(name, path, document):
         folder, record = by_name[name]
         table = folder / (record["results"] or ".") / path
         if not table.is_file():
             return None
+        if table.suffix == ".png":
+            # A figure: copied beside the document (figures/NAME-FILE), shown where the block stands.
+            copy = pathlib.Path("figures") / f"{name}-{path}"
+            (document.parent / "figures").mkdir(exist_ok=True)
+            write_whole_bytes(document.parent / copy, table.read_bytes())
+            return [f"`{path}` of run {name}, from the verification report ({source}, {header['started']}):", "",
+                    f"![{path} of run {name}]({urllib.parse.quote(str(copy))})", ""]
         text = text_of(table).rstrip("\n")
         rows = list(csv.reader(text.splitlines()))
         if table.suffix == ".csv" and rows:
@@ -559,7 +577,7 @@ def write_documents(arguments, header, summary, claims_table, records):
         for what, start, stop in generated_blocks(text):
             missing = [n for n in runs_named(what) if n not in by_name]
             lines = None if missing else claims() if what[0] == "claims" else runs(what[1:]) if what[0] == "runs" \
-                else file(*what[1:])
+                else file(*what[1:], document)
             if lines is None:
                 reason = f"not in this report: {', '.join(missing)}" if missing else "the run wrote no such file"
                 print(f"{document}: kept the block '{' '.join(what)}' ({reason})")

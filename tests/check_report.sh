@@ -21,7 +21,7 @@ grep -q "^- commit: $(git -C "$(dirname "$report")" rev-parse --short=10 HEAD)" 
   fail "report.md does not name the commit of the build's sources"
 # The documents' generated blocks: claims, a run's row, a file of its results; a block of a run not in
 # the report is kept; a block not closed, or not saying what it holds, is refused.
-printf 'top\n<!-- report: claims -->\nold table\n<!-- report: end -->\nmiddle\n<!-- report: runs penny-gap -->\nold row\n<!-- report: end -->\n<!-- report: file gap-size-adhesionless gap-size.csv -->\nold file\n<!-- report: end -->\n<!-- report: runs jkr-sphere -->\nkept\n<!-- report: end -->\nbottom\n' > "$work/README.md"
+printf 'top\n<!-- report: claims -->\nold table\n<!-- report: end -->\nmiddle\n<!-- report: runs penny-gap -->\nold row\n<!-- report: end -->\n<!-- report: file gap-size-adhesionless gap-size.csv -->\nold file\n<!-- report: end -->\n<!-- report: runs jkr-sphere -->\nkept\n<!-- report: end -->\n<!-- report: file penny-gap picture-opening.png -->\n<!-- report: end -->\nbottom\n' > "$work/README.md"
 run "$work/good" --prms "$scenes" gap-size-adhesionless penny-gap --documents "$work/README.md" ||
   fail "exit status $? when resuming"
 [ "$(grep -c '(recorded ' "$work/log")" = 2 ] || fail "a second call ran recorded scenes again"
@@ -32,6 +32,10 @@ grep -A3 "^<!-- report: file gap-size-adhesionless gap-size.csv -->" "$work/READ
   fail "--documents did not write the file block"
 sed -n '/file gap-size-adhesionless/,/report: end/p' "$work/README.md" | grep -q "^|---|" ||
   fail "--documents did not write gap-size.csv as a table"
+grep -q '^!\[picture-opening.png of run penny-gap\](figures/penny-gap-picture-opening.png)$' "$work/README.md" ||
+  fail "--documents did not show the figure"
+cmp -s "$work/figures/penny-gap-picture-opening.png" "$work/good/runs/penny-gap/penny-gap/picture-opening.png" ||
+  fail "--documents did not copy the figure beside the document"
 grep -q "old" "$work/README.md" && fail "--documents kept an old block"
 grep -q "^kept$" "$work/README.md" || fail "--documents rewrote the block of a run not in the report"
 grep -q "kept the block 'runs jkr-sphere' (not in this report: jkr-sphere)" "$work/log" ||

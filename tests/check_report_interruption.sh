@@ -38,10 +38,12 @@ reference=$(verdicts "$work/reference")
 [ "$(echo "$reference" | grep -c PASS)" = "$(echo $runs | wc -w)" ] || fail "the uninterrupted report does not pass every run"
 duration=$(/usr/bin/python3 -c "import json, glob; print(sum(json.load(open(f))['wall time (s)'] + 1 for f in glob.glob('$work/reference/runs/*/record.json')))")
 
-# The processes whose working folder lies in the report's folder.
+# The live processes whose working folder or command line lies in the report's folder.
 left_behind() {
   for process in /proc/[0-9]*; do
-    case "$(readlink "$process/cwd" 2> /dev/null)" in "$work/out"*) echo "${process#/proc/}" ;; esac
+    [ "$(sed 's/.*) //' "$process/stat" 2> /dev/null | cut -d' ' -f1)" = Z ] && continue
+    { readlink "$process/cwd"; tr '\0' ' ' < "$process/cmdline"; } 2> /dev/null | grep -qF "$work/out" &&
+      echo "${process#/proc/}"
   done
 }
 

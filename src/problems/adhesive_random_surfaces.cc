@@ -70,7 +70,8 @@ namespace penny
     return areas;
   }
 
-  RealisationAreas solve_realisation(const AdhesiveRandomSurfaces &surfaces, const std::uint64_t seed)
+  RealisationAreas solve_realisation(const AdhesiveRandomSurfaces &surfaces, const std::uint64_t seed,
+                                     RealisationFields *fields)
   {
     const double q0 = surfaces.spectrum.wavenumbers.front(), q1 = surfaces.spectrum.wavenumbers.back();
     const double period = 2 * M_PI / q0, shortest = 2 * M_PI / q1;
@@ -115,11 +116,19 @@ namespace penny
         areas.iterations += state.iterations;
         std::vector<double> on_path, switched_on;
         const bool          finest = z + 1 == surfaces.zones.lengths.size();
+        RealisationFields  *keep   = finest ? fields : nullptr;
+        if (keep)
+          *keep = {transform.grid(), h, full_contact_pressure(transform, h, surfaces.E_star), {}, {}, {}};
         for (const double p_bar : loads)
           {
             state = adhesive.solve(p_bar, surfaces.control, state.gap);
             on_path.push_back(share_above(state.gap, range));
             areas.iterations += state.iterations;
+            if (keep)
+              {
+                keep->adhesive_gaps.push_back(state.gap);
+                keep->adhesive_pressures.push_back(state.pressure);
+              }
             if (!(p_bar > 0))
               {
                 // No contact without adhesion: nothing to switch it on in.
@@ -132,6 +141,8 @@ namespace penny
             const ContactSolution on   = adhesive.solve(p_bar, surfaces.control, free.gap);
             switched_on.push_back(share_above(on.gap, range));
             areas.iterations += free.iterations + on.iterations;
+            if (keep)
+              keep->adhesionless_gaps.push_back(free.gap);
             if (finest)
               areas.adhesionless.push_back(share_above(free.gap, 0));
           }

@@ -56,10 +56,24 @@ namespace penny
     static RealisationAreas unpack(const std::vector<double> &row, std::size_t n_zones, std::size_t n_loads);
   };
 
+  // The fields of one realisation on the finest zone's grid, for ParaView:
+  // heights (m), the full-contact pressure less its mean (Pa), and per load
+  // the gap without adhesion (none at p_bar = 0, where there is no contact)
+  // and the gap and the pressure (Pa; tension negative) with adhesion on the
+  // loading branch.
+  struct RealisationFields
+  {
+    PeriodicGrid           grid;
+    GridField              heights, full_contact;
+    std::vector<GridField> adhesionless_gaps, adhesive_gaps, adhesive_pressures;
+  };
+
   // The realisation of `seed`, resampled onto the grid of each cohesive zone
-  // (its spectrum is band-limited, so every grid holds the same surface).
-  // Throws std::runtime_error if the surfaces separate.
-  RealisationAreas solve_realisation(const AdhesiveRandomSurfaces &surfaces, std::uint64_t seed);
+  // (its spectrum is band-limited, so every grid holds the same surface);
+  // its fields into `fields` if given. Throws std::runtime_error if the
+  // surfaces separate.
+  RealisationAreas solve_realisation(const AdhesiveRandomSurfaces &surfaces, std::uint64_t seed,
+                                     RealisationFields *fields = nullptr);
 
   // The JKR limit of one branch at one load over realisations: the mean
   // area at each cohesive zone, the leading order the last three means show

@@ -14,6 +14,7 @@
 // claims are the paper's, not the verifier's.
 #include "closed_forms/adhesive_gap.h"
 #include "contact/extrapolation.h"
+#include "output/grid_fields.h"
 #include "output/progress.h"
 #include "parallel/memory_budget.h"
 #include "parallel/spread_over_ranks.h"
@@ -87,6 +88,7 @@ namespace penny
         material_section(sections, material);
         roughness_section(sections, roughness, false);
         contact_solver_section(sections, control, 1e-8);
+        fields_section(sections, write_fields);
       }
 
       void entries(Entries &entries) override
@@ -258,7 +260,33 @@ namespace penny
         summary.add_row({"MPI ranks", dealii::Utilities::MPI::n_mpi_processes(MPI_COMM_WORLD)});
         summary.add_row({"wall time (s)", Table::Cell(timer.wall_time(), Table::Format{4})});
         publish(summary, "adhesive-random-contact-summary.csv", results, log);
+        if (write_fields)
+          write_first_realisation(cases.front(), results);
         return {};
+      }
+
+      // The first realisation of the first H and zeta for ParaView
+      // (surface.vti), on the finest zone's grid: heights, full-contact
+      // pressure, and per load the gaps without and with adhesion and the
+      // adhesive pressure. Each rank solves it (the write is collective; rank
+      // 0's counts).
+      void write_first_realisation(const Case &first, const ResultFolder &results) const
+      {
+        RealisationFields fields;
+        solve_realisation(first.surfaces, realisation_seed(seed, 0), &fields);
+        std::vector<GridFieldOutput> outputs{{"height (m)", &fields.heights},
+                                             {"full-contact pressure less its mean (Pa)", &fields.full_contact}};
+        std::size_t without = 0;
+        for (std::size_t j = 0; j < mean_pressures.size(); ++j)
+          {
+            const std::string at = " at p_bar = " + Table::label(mean_pressures[j], 4) + " sqrt(V)";
+            if (mean_pressures[j] > 0)
+              outputs.push_back({"gap without adhesion" + at + " (m)", &fields.adhesionless_gaps[without++]});
+            outputs.push_back({"gap with adhesion" + at + " (m)", &fields.adhesive_gaps[j]});
+            outputs.push_back({"pressure with adhesion" + at + " (Pa)", &fields.adhesive_pressures[j]});
+          }
+        const PeriodicGrid &grid = fields.grid;
+        write_grid_fields("surface", grid.nx, grid.ny, grid.lx / grid.nx, grid.ly / grid.ny, outputs, results);
       }
 
       Table area_table() const
@@ -417,6 +445,7 @@ namespace penny
       double               first_contact;
       unsigned int         n_realisations;
       std::uint64_t        seed;
+      bool                 write_fields;
     };
   } // namespace
 
