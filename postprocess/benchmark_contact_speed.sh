@@ -2,7 +2,8 @@
 # The contact solver's speed against the grid on one rank, N = 256 ... 4096
 # (postprocess/benchmark_contact.cc: the random surface of random-contact,
 # tolerance 1e-8), with FFTW_ESTIMATE and with FFTW_MEASURE plans, each table
-# with the load average at its start; then targets.md, the measured values
+# with the load average at its start (speed-PLANNING.txt, and as a Markdown
+# table speed-PLANNING.md); then targets.md, the measured values
 # against issue 24's targets (FFTW_MEASURE): the six loads 3 ... 0.5 sqrt(V)
 # of a 2048^2 realisation in at most 15 s, and the iterations at 4096^2 at
 # most 1.3 times those at 512^2. About 14 minutes; timings mean something on
@@ -21,6 +22,8 @@ for planning in estimate measure; do
   option=$([ $planning = measure ] && echo measure || true)
   echo "== benchmark_contact, FFTW $planning, one rank"
   "$build/benchmark_contact" $option < /dev/null | tee "$out/speed-$planning.txt"
+  # The same as a Markdown table for the documents (without the per-solve "# result" lines).
+  awk -f "$root/postprocess/speed_table.awk" "$out/speed-$planning.txt" > "$out/speed-$planning.md"
 done
 # A row: | N | iter time s/iter s/conv iter/c res | cold iter + coarse, time | iter6 time6 | iterA timeA A_nc | ...
 awk '
