@@ -201,10 +201,11 @@ namespace penny
           catch (const ParameterHandler::ExcEntryUndeclared &)
             {
               // A name with blanks at its ends is shown as written: it is not the entry it resembles.
-              const bool blank_ends = !name.empty() && (std::isblank(name.front()) || std::isblank(name.back()));
+              const bool blank_ends =
+                  !name.empty() && (std::isblank(name.front()) || std::isblank(name.back()));
               throw InputError((blank_ends ? in_quotes(full) + " (a name with blanks at its ends)" : full) +
-                               " is not an entry of Scene = " + scene +
-                               " ('penny --print-parameters " + scene + "' lists them)");
+                               " is not an entry of Scene = " + scene + " ('penny --print-parameters " +
+                               scene + "' lists them)");
             }
           catch (const dealii::ExceptionBase &exception)
             {

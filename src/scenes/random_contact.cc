@@ -55,14 +55,14 @@ namespace penny
         const PeriodicGrid     grid     = surface_grid(input.surfaces, spectrum);
         const FourierTransform transform(grid);
         const FieldMoments     pressure = lattice_moments(grid, pressure_spectrum(spectrum, E_star)).expected;
-        check_summit_spectrum(pressure,
-                              (input.roughness.spectrum == RoughnessParameters::Spectrum::file
-                                   ? "Roughness/Spectrum file = " + in_quotes(input.roughness.spectrum_file)
-                                   : "Roughness/Magnification zeta = " + shortest(input.roughness.zeta)) +
-                                  " with Random surfaces/Period L/lambda0 = " + shortest(input.surfaces.period));
-        const double           sqrt_V   = std::sqrt(pressure.m0);
-        const std::size_t      n_loads  = mean_pressures.size();
-        std::vector<double>    loads;
+        check_summit_spectrum(
+            pressure, (input.roughness.spectrum == RoughnessParameters::Spectrum::file
+                           ? "Roughness/Spectrum file = " + in_quotes(input.roughness.spectrum_file)
+                           : "Roughness/Magnification zeta = " + shortest(input.roughness.zeta)) +
+                          " with Random surfaces/Period L/lambda0 = " + shortest(input.surfaces.period));
+        const double        sqrt_V  = std::sqrt(pressure.m0);
+        const std::size_t   n_loads = mean_pressures.size();
+        std::vector<double> loads;
         for (const double p : mean_pressures)
           loads.push_back(p * sqrt_V);
 

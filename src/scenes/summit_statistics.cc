@@ -94,10 +94,10 @@ namespace penny
               const LatticeMoments   height_lattice = lattice_moments(grid, spectrum);
               const LatticeMoments   pressure_lattice =
                   lattice_moments(grid, pressure_spectrum(spectrum, E_star));
-              check_summit_spectrum(pressure_lattice.expected,
-                                    "Summit statistics/Magnifications = " + shortest(zeta) +
-                                        " with Random surfaces/Period L/lambda0 = " +
-                                        shortest(input.surfaces.period));
+              check_summit_spectrum(
+                  pressure_lattice.expected,
+                  "Summit statistics/Magnifications = " + shortest(zeta) +
+                      " with Random surfaces/Period L/lambda0 = " + shortest(input.surfaces.period));
               const double     sqrt_V = std::sqrt(pressure_lattice.expected.m0);
               const HeightBins bins{-2 * sqrt_V, 4 * sqrt_V, n_height_bins};
 
