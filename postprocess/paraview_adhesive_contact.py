@@ -15,7 +15,8 @@ import sys
 import numpy
 import paraview.simple as pv
 
-from paraview_common import colour_bar, fetched, folders, look_at, save, title, white_view
+from paraview_common import (colour_bar, fetched, folders, look_at, save, symmetric_colours, title,
+                             white_view)
 
 folder, pictures = folders()
 size = [1400, 700]
@@ -35,10 +36,7 @@ view = white_view(size)
 left = surface
 right = pv.Transform(Input=surface)
 right.Transform.Translate = [shift, 0, 0]
-colours = pv.GetColorTransferFunction(pressure)
-colours.ApplyPreset("Cool to Warm", True)
-largest = numpy.abs(numpy.asarray(data.PointData[pressure])).max()
-colours.RescaleTransferFunction(-largest, largest)
+colours = symmetric_colours(pressure, numpy.abs(numpy.asarray(data.PointData[pressure])).max())
 for source in (left, right):
     display = pv.Show(source, view)
     display.SetRepresentationType("Slice")

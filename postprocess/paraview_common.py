@@ -51,6 +51,14 @@ def colour_bar(view, display, lut, title, position):
     return bar
 
 
+def symmetric_colours(name, largest):
+    """The 'Cool to Warm' colour map of the field `name` over [-largest, largest]: white at zero."""
+    colours = pv.GetColorTransferFunction(name)
+    colours.ApplyPreset("Cool to Warm", True)
+    colours.RescaleTransferFunction(-largest, largest)
+    return colours
+
+
 def mesh_coloured_by_component(view, source, component, edge_grey, title, position):
     """`source` drawn with its cell edges, coloured by component 0, 1 or 2 of
     the displacement u over its range, with a colour bar."""

@@ -13,7 +13,8 @@ import sys
 import numpy
 import paraview.simple as pv
 
-from paraview_common import colour_bar, fetched, folders, look_at, mesh_coloured_by_component, save, title, white_view
+from paraview_common import (colour_bar, fetched, folders, look_at, mesh_coloured_by_component, save,
+                             symmetric_colours, title, white_view)
 
 folder, pictures = folders()
 size = [900, 700]
@@ -51,10 +52,7 @@ tube = pv.Tube(Input=pv.ExtractSurface(Input=with_error))
 tube.Radius = 0.012 * semi_axis_a
 tube_display = pv.Show(tube, view)
 pv.ColorBy(tube_display, ("POINTS", "K_I FE/exact - 1"))
-error_colours = pv.GetColorTransferFunction("K_I FE/exact - 1")
-error_colours.ApplyPreset("Cool to Warm", True)
-largest = max(abs(relative).max(), 1e-300)
-error_colours.RescaleTransferFunction(-largest, largest)
+error_colours = symmetric_colours("K_I FE/exact - 1", max(abs(relative).max(), 1e-300))
 colour_bar(view, tube_display, error_colours, "K_I FE/exact - 1", [0.87, 0.1])
 title(view, f"crack plane (opening u_z) and front, K_I against Green-Sneddon ({ring}): "
             f"largest |error| {abs(relative).max():.2e} over {len(relative)} front points", 12)

@@ -12,7 +12,8 @@ import sys
 import numpy
 import paraview.simple as pv
 
-from paraview_common import colour_bar, fetched, folders, look_at, save, title, white_view
+from paraview_common import (colour_bar, fetched, folders, look_at, save, symmetric_colours, title,
+                             white_view)
 
 folder, pictures = folders()
 size = [800, 700]
@@ -30,10 +31,7 @@ view = white_view(size)
 surface_display = pv.Show(surface, view)
 surface_display.SetRepresentationType("Slice")
 pv.ColorBy(surface_display, ("POINTS", pressure))
-colours = pv.GetColorTransferFunction(pressure)
-colours.ApplyPreset("Cool to Warm", True)
-largest = numpy.abs(numpy.asarray(data.PointData[pressure])).max()
-colours.RescaleTransferFunction(-largest, largest)
+colours = symmetric_colours(pressure, numpy.abs(numpy.asarray(data.PointData[pressure])).max())
 colour_bar(view, surface_display, colours, "p_fc - mean (Pa)", [0.88, 0.1])
 label = title(view, "")
 look_at(view, [(x0 + x1) / 2, (y0 + y1) / 2, 0], 0.62 * side, 10 * side)
