@@ -24,12 +24,13 @@ allowed = {
     "fourier": [],
     "contact": ["numerics", "input", "parallel", "closed_forms", "fourier"],
     "statistics": below_fe + ["fourier", "contact"],
+    "topography": ["numerics", "input", "fourier", "statistics"],
     "output": fe_layers,
-    "problems": fe_layers + spectral + ["output"],
-    "scenes": fe_layers + spectral + ["output", "problems"],
+    "problems": fe_layers + spectral + ["topography", "output"],
+    "scenes": fe_layers + spectral + ["topography", "output", "problems"],
     "apps": ["input", "parallel", "scenes"],
 }
-fe_free = set(below_fe + spectral)  # no deal.II beyond deal.II/base
+fe_free = set(below_fe + spectral + ["topography"])  # no deal.II beyond deal.II/base
 reads_entries = {"problems", "scenes", "apps"}
 
 files = sorted(path for path in src.rglob("*.[ch]*") if path.is_file())

@@ -1,0 +1,91 @@
+#include "problems/measured_surface.h"
+
+#include "input/input_error.h"
+
+#include <filesystem>
+
+namespace penny
+{
+  void measured_surface_section(Sections &sections, MeasuredSurfaceInput &input)
+  {
+    sections.subsection("Measured surface", [&](Entries &entries) {
+      entries.file("File", input.file, "surface.x3p",
+                   "The topography file (relative paths start at the parameter file's folder).");
+      entries.choice("Format", input.format, TopographyFormat::automatic,
+                     {{"automatic", TopographyFormat::automatic},
+                      {"matrix text", TopographyFormat::matrix_text},
+                      {"xyz text", TopographyFormat::xyz_text},
+                      {"x3p", TopographyFormat::x3p},
+                      {"sur", TopographyFormat::sur},
+                      {"netcdf", TopographyFormat::netcdf}},
+                     "The file's format; automatic: from its extension (.txt .asc .dat .csv: matrix text, "
+                     ".xyz: xyz text, .x3p, .sur, .nc: netcdf).");
+      entries.number("Text size x", input.text.lx, 0, interval("[]", 0, largest_magnitude, "m"),
+                     "The physical size along x (along a row) of a matrix text file that states none "
+                     "(a Gwyddion header's '# Width:' takes precedence); 0: none given. Units: m.");
+      entries.number("Text size y", input.text.ly, 0, interval("[]", 0, largest_magnitude, "m"),
+                     "The same along y (down the rows; '# Height:'). Units: m.");
+      entries.text("Text unit", input.text.unit, "m",
+                   "The length unit of the numbers of a text file that states none ('# Value units:'): "
+                   "km, m, cm, mm, um, nm, A or pm; of x, y and z in xyz text.");
+      entries.choice("Missing points", input.fill_missing, false, {{"refuse", false}, {"fill", true}},
+                     "Points the file marks as not measured: refuse the map, or fill them by harmonic "
+                     "interpolation from the measured ones (how many is printed).");
+      entries.choice(
+          "Detrending", input.detrending, Detrending::plane,
+          {{"mean", Detrending::mean}, {"plane", Detrending::plane}, {"curvature", Detrending::curvature}},
+          "The least-squares trend removed from the heights: the mean, a plane, or a curvature "
+          "(a quadratic in x and y).");
+      entries.flag("Hann window", input.hann_window, true,
+                   "Whether the PSD is taken of the map times a Hann window (in x and y, normalised to keep "
+                   "the mean square), which keeps the jump between opposite edges of a map that is not "
+                   "periodic out of the spectrum.");
+    });
+    sections.check([&] {
+      if (!std::filesystem::is_regular_file(input.file))
+        throw InputError("Measured surface/File = " + in_quotes(input.file) +
+                         " does not exist or is not a file");
+      sections.input_file(input.file);
+      try
+        {
+          metres_per(input.text.unit);
+        }
+      catch (const InputError &error)
+        {
+          throw InputError("Measured surface/Text unit = " + in_quotes(input.text.unit) + ": " +
+                           error.what());
+        }
+    });
+  }
+
+  Topography prepared_topography(const MeasuredSurfaceInput &input, std::ostream &log)
+  {
+    Topography topography;
+    try
+      {
+        topography = read_topography(input.file, input.format, input.text);
+      }
+    catch (const InputError &error)
+      {
+        throw InputError("Measured surface/File = " + std::string(error.what()));
+      }
+    const PeriodicGrid &grid    = topography.grid;
+    const std::size_t   missing = missing_points(topography);
+    log << "Measured surface: " << input.file << " (" << topography.description << "), " << grid.nx << " x "
+        << grid.ny << " points on " << grid.lx << " m x " << grid.ly << " m (pixels " << grid.lx / grid.nx
+        << " m x " << grid.ly / grid.ny << " m), heights in " << topography.height_unit
+        << ", points not measured: " << missing << '\n';
+    if (missing > 0 && !input.fill_missing)
+      throw InputError("Measured surface/Missing points = refuse, and " + in_quotes(input.file) + " marks " +
+                       std::to_string(missing) + " of its " + std::to_string(grid.n_points()) +
+                       " points as not measured (the allowed choice for this file: fill)");
+    if (missing > 0)
+      {
+        fill_missing_points(topography);
+        log << "  filled " << missing << " points (" << 100. * missing / grid.n_points()
+            << " %) by harmonic interpolation\n";
+      }
+    detrend(topography, input.detrending);
+    return topography;
+  }
+} // namespace penny
