@@ -2,6 +2,8 @@
 
 #include "input/input_error.h"
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 
 namespace penny
@@ -85,7 +87,18 @@ namespace penny
         log << "  filled " << missing << " points (" << 100. * missing / grid.n_points()
             << " %) by harmonic interpolation\n";
       }
+    // A map that is flat once its trend is gone has no roughness to describe or contact to solve.
+    double largest = 0;
+    for (const double h : topography.heights)
+      largest = std::max(largest, std::abs(h));
     detrend(topography, input.detrending);
+    double rms = 0;
+    for (const double h : topography.heights)
+      rms += h * h / grid.n_points();
+    if (!(std::sqrt(rms) > 1e-12 * largest))
+      throw InputError("Measured surface/File = " + in_quotes(input.file) +
+                       " is flat once Measured surface/Detrending removes its trend (rms height " +
+                       shortest(std::sqrt(rms)) + " m): there is no roughness to describe");
     return topography;
   }
 } // namespace penny

@@ -1,11 +1,18 @@
 // measured-surface: a measured topography read from its instrument's file and
 // prepared (points not measured filled, a trend removed), with its rms
 // height, slope and curvature, its isotropic PSD and the power law fitted to
-// it over the range the map resolves (doc/measured.md). No verdict: it states
-// what the surface is, for the scenes that put it in contact.
+// it over the range the map resolves, and its adhesionless contact with an
+// elastic half-space at a few loads, the map taken as one period (the
+// periodic solver) and as an isolated patch (the non-periodic one) side by
+// side (doc/measured.md). No verdict: it states what the surface is and how
+// much the choice of boundary moves its contact.
 #include "problems/measured_surface.h"
+#include "contact/half_space.h"
+#include "contact/nonperiodic_contact.h"
 #include "output/grid_fields.h"
 #include "output/table.h"
+#include "problems/contact_solver.h"
+#include "problems/solid.h"
 #include "scenes/scene.h"
 
 #include <cmath>
@@ -19,7 +26,17 @@ namespace penny
       void inputs(Sections &sections) override
       {
         measured_surface_section(sections, input);
+        material_section(sections, material);
+        contact_solver_section(sections, control, 1e-8);
         fields_section(sections, write_fields);
+      }
+
+      void entries(Entries &entries) override
+      {
+        entries.increasing_numbers(
+            "Mean pressures", mean_pressures, {0.5, 1, 2, 3}, 1, interval("(]", 0, 100, "sqrt(V)"),
+            "p_bar/sqrt(V) of the contacts, V = <p_fc^2> the variance of the full-contact pressure of "
+            "the prepared map taken as one period. Units: sqrt(V).");
       }
 
       Verdict run(const ResultFolder &results, std::ostream &log) override
@@ -40,13 +57,17 @@ namespace penny
         summary.add_row({"rms height (m)", rms.rms_height});
         summary.add_row({"rms slope", rms.rms_slope});
         summary.add_row({"rms curvature (1/m)", rms.rms_curvature});
-        summary.add_row({"PSD fit: H", fit.hurst});
-        summary.add_row({"PSD fit: C at q_low (m^4)", fit.c0});
         summary.add_row({"PSD fit: q_low (1/m)", fit.q_low});
         summary.add_row({"PSD fit: q_high (1/m)", fit.q_high});
         summary.add_row({"PSD fit: bins", fit.n_bins});
-        summary.add_row({"PSD fit: R^2 of log C", fit.r_squared});
-        summary.add_row({"PSD fit: rms of log10(C/fit)", fit.rms_log_deviation});
+        const bool fitted       = fit.n_bins >= 3;
+        const auto fitted_value = [&](const double value) -> Table::Cell {
+          return fitted ? Table::Cell(value) : Table::Cell("not fitted (fewer than 3 bins)");
+        };
+        summary.add_row({"PSD fit: H", fitted_value(fit.hurst)});
+        summary.add_row({"PSD fit: C at q_low (m^4)", fitted_value(fit.c0)});
+        summary.add_row({"PSD fit: R^2 of log C", fitted_value(fit.r_squared)});
+        summary.add_row({"PSD fit: rms of log10(C/fit)", fitted_value(fit.rms_log_deviation)});
         publish(summary, "measured-surface.csv", results, log,
                 "The prepared surface (rms slope: forward differences; rms curvature: half the rms of the "
                 "five-point Laplacian; the PSD fitted from half the shorter side to four pixels)");
@@ -55,26 +76,67 @@ namespace penny
         for (std::size_t k = 0; k < psd.wavenumbers.size(); ++k)
           {
             const double q = psd.wavenumbers[k];
-            spectrum.add_row({q, psd.densities[k], fit.c0 * std::pow(q / fit.q_low, -2 * (1 + fit.hurst)),
-                              q >= range.q_low && q <= range.q_high ? "yes" : "no"});
+            spectrum.add_row({q, psd.densities[k],
+                              fitted_value(fit.c0 * std::pow(q / fit.q_low, -2 * (1 + fit.hurst))),
+                              fitted && q >= range.q_low && q <= range.q_high ? "yes" : "no"});
           }
         results.write_csv("measured-surface-psd.csv", spectrum);
 
+        // The contacts: the map as one period, and as an isolated patch.
+        const double           E_star = material.plane_strain_modulus();
+        const FourierTransform transform(grid);
+        double                 V = 0;
+        for (const double p : full_contact_pressure(transform, topography.heights, E_star))
+          V += p * p / grid.n_points();
+        const HalfSpaceContact       periodic(transform, topography.heights, E_star);
+        const NonperiodicContact     isolated(grid, topography.heights, E_star);
+        Table                        contact({"p_bar/sqrtV",
+                                              "p_bar (Pa)",
+                                              {"A_nc/A_0 periodic", {6}},
+                                              {"A_nc/A_0 patch", {6}},
+                                              "iterations periodic",
+                                              "iterations patch"});
+        std::vector<GridField>       gaps;
+        std::vector<GridFieldOutput> fields = {{"height (m)", &topography.heights}};
+        gaps.reserve(2 * mean_pressures.size());
+        for (const double load : mean_pressures)
+          {
+            const double              p_bar = load * std::sqrt(V);
+            const ContactSolution     cell  = periodic.solve(p_bar, control);
+            const NonperiodicSolution patch = isolated.solve(p_bar, control);
+            contact.add_row({load, p_bar, 1 - cell.contact_fraction, 1 - patch.contact_fraction,
+                             cell.iterations, patch.iterations});
+            gaps.push_back(cell.gap);
+            gaps.push_back(patch.separation);
+            const std::string at = " at p_bar = " + Table::label(load, 4) + " sqrt(V) (m)";
+            fields.push_back({"gap periodic" + at, &gaps[gaps.size() - 2]});
+            fields.push_back({"gap patch" + at, &gaps.back()});
+          }
+        log << '\n';
+        publish(contact, "measured-surface-contact.csv", results, log,
+                "Adhesionless contact, E* = " + Table::label(E_star) +
+                    " Pa, sqrt(V) = " + Table::label(std::sqrt(V)) +
+                    " Pa: the map as one period, and as an isolated patch (DC-FFT)");
+
         if (write_fields)
-          write_grid_fields("surface", grid.nx, grid.ny, grid.lx / grid.nx, grid.ly / grid.ny,
-                            {{"height (m)", &topography.heights}}, results);
-        log << "Tables: " << results.directory().string() << "/measured-surface.csv, measured-surface-psd.csv"
+          write_grid_fields("surface", grid.nx, grid.ny, grid.lx / grid.nx, grid.ly / grid.ny, fields,
+                            results);
+        log << "Tables: " << results.directory().string()
+            << "/measured-surface.csv, measured-surface-psd.csv, measured-surface-contact.csv"
             << (write_fields ? "; fields: surface.pvd" : "") << '\n';
         return {};
       }
 
       MeasuredSurfaceInput input;
+      MaterialParameters   material;
+      ContactSolverControl control;
+      std::vector<double>  mean_pressures; // p_bar/sqrt(V)
       bool                 write_fields;
     };
   } // namespace
 
-  PENNY_REGISTER_SCENE(MeasuredSurfaceScene, "measured-surface", "",
+  PENNY_REGISTER_SCENE(MeasuredSurfaceScene, "measured-surface", "Measured contact",
                        "a measured topography file read and prepared: its rms height, slope and curvature, "
-                       "its isotropic PSD and a fitted power law",
+                       "its isotropic PSD, a fitted power law, and its contact as a period and as a patch",
                        "")
 } // namespace penny

@@ -110,9 +110,8 @@ namespace penny
         laplacians += std::pow((h(i + 1, j) - 2 * h(i, j) + h(i - 1, j)) / (dx * dx) +
                                    (h(i, j + 1) - 2 * h(i, j) + h(i, j - 1)) / (dy * dy),
                                2);
-    const double nan = std::numeric_limits<double>::quiet_NaN();
     return {std::sqrt(squares / topography.heights.size()), std::sqrt(slopes / ((nx - 1) * (ny - 1))),
-            nx > 2 && ny > 2 ? std::sqrt(laplacians / ((nx - 2) * (ny - 2))) / 2 : nan};
+            std::sqrt(laplacians / ((nx - 2) * (ny - 2))) / 2};
   }
 
   PowerSpectrum isotropic_spectrum(const Topography &topography, const bool hann)

@@ -32,7 +32,7 @@ namespace penny
   // height over all points; slope sqrt<(dh/dx)^2 + (dh/dy)^2> with forward
   // differences at the (nx - 1)(ny - 1) points where both exist; curvature
   // sqrt<(laplacian h)^2>/2 with the three-point second differences at the
-  // (nx - 2)(ny - 2) interior points.
+  // (nx - 2)(ny - 2) interior points (a map has 3 x 3 points at least).
   struct SurfaceRoughness
   {
     double rms_height;    // m

@@ -24,9 +24,10 @@ namespace penny
                               const double dx, const double dy)
   {
     // 2^31 points (16 GiB of heights) is beyond what a rank can hold with the work arrays of a contact.
-    if (nx < 2 || ny < 2 || nx * ny > (1ll << 31))
+    // Three points a side at least: the rms curvature's stencil needs an interior point.
+    if (nx < 3 || ny < 3 || nx * ny > (1ll << 31))
       bad_file(filename, "a grid of " + std::to_string(nx) + " x " + std::to_string(ny) +
-                             " points (a height map needs 2 x 2 to 2^31 points)");
+                             " points (a height map needs 3 x 3 to 2^31 points)");
     if (!(dx > 0 && dy > 0 && std::isfinite(dx) && std::isfinite(dy)))
       bad_file(filename,
                "pixel size " + shortest(dx) + " x " + shortest(dy) + " m (must be positive and finite)");

@@ -17,6 +17,6 @@ namespace penny
   [[noreturn]] void bad_file(const std::string &filename, const std::string &what);
 
   // A topography of nx x ny points at spacings dx, dy (m), heights to be filled;
-  // refuses grids of fewer than 2 x 2 points and spacings that are not positive and finite.
+  // refuses grids of fewer than 3 x 3 points and spacings that are not positive and finite.
   Topography empty_topography(const std::string &filename, long long nx, long long ny, double dx, double dy);
 } // namespace penny
