@@ -12,7 +12,9 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
 for ranks in 1 2; do
-  sed "s|set Directory *=.*|set Directory = ranks-$ranks|" "$scene" > scene.prm
+  # The copy runs here: a relative File starts at the scene's own folder.
+  sed -e "s|set Directory *=.*|set Directory = ranks-$ranks|" \
+      -e "s|set File *= *\([^/ ].*\)|set File = $(dirname "$scene")/\1|" "$scene" > scene.prm
   mpirun -np $ranks "$penny" scene.prm > ranks-$ranks.log
 done
 if ! /usr/bin/python3 "$compare" ranks-1 ranks-2 0; then

@@ -1,0 +1,206 @@
+// measured-analysis: the paper's statistical layer on a measured surface,
+// beside its Gaussian twins (doc/measured.md, "The paper's layer on a measured
+// surface"). The prepared map, taken as one period, and its twins (its
+// Fourier amplitudes with random phases, spread over the ranks): the summits of the tension -p_fc (density,
+// mean curvature) beside Kac-Rice's expectation from the map's moments, and
+// at each load the adhesionless non-contact area of the full boundary-element
+// solution beside the layer's laws: the isolated-gap law over the sampled
+// summits, over Kac-Rice's, and the paper's linear law in both conventions.
+// What differs between the map and its twin is due to the map's heights not
+// being Gaussian (the power spectra are the same). No verdict.
+#include "contact/half_space.h"
+#include "output/table.h"
+#include "parallel/spread_over_ranks.h"
+#include "problems/contact_solver.h"
+#include "problems/measured_surface.h"
+#include "problems/random_surfaces.h"
+#include "problems/solid.h"
+#include "scenes/scene.h"
+#include "statistics/contact_area.h"
+#include "statistics/random_field.h"
+#include "statistics/summit_statistics.h"
+
+#include <deal.II/base/mpi.h>
+
+#include <cmath>
+#include <complex>
+#include <cstdint>
+#include <random>
+
+namespace penny
+{
+  namespace
+  {
+    // A Gaussian twin of the map: its Fourier coefficients with random phases
+    // (a phase-randomised surrogate), so the same power at every wavevector,
+    // anisotropy included, and the same V and moments, with heights that a
+    // sum of many independent phases makes Gaussian. On the lines ky = 0 and
+    // ky = ny/2 the phases of kx and -kx are opposite (a real field); the
+    // coefficients that must be real keep theirs.
+    GridField gaussian_twin(const FourierTransform &transform, const GridField &heights,
+                            const std::uint64_t seed)
+    {
+      FourierTransform::Spectrum             spectrum = transform.forward(heights);
+      std::mt19937_64                        random(seed);
+      std::uniform_real_distribution<double> angle(0, 2 * M_PI);
+      const unsigned int                     nx = transform.grid().nx;
+      std::vector<double>                    line_phases[2];
+      for (auto &phases : line_phases)
+        for (unsigned int kx = 0; kx <= nx / 2; ++kx)
+          phases.push_back(angle(random));
+      for (std::size_t c = 0; c < spectrum.size(); ++c)
+        {
+          const Wavevector q = transform.wavevector(c);
+          double           phase;
+          if (q.ky == 0 || q.nyquist_y)
+            {
+              if (q.kx == 0 || q.nyquist_x)
+                continue;
+              phase = (q.kx > 0 ? 1 : -1) * line_phases[q.ky == 0 ? 0 : 1][std::abs(q.kx)];
+            }
+          else
+            phase = angle(random);
+          spectrum[c] *= std::polar(1., phase);
+        }
+      return transform.inverse(spectrum);
+    }
+
+    // Per surface: sqrt(V), the summits' density and mean curvature, then per
+    // load the BEM's A_nc/A_0 and the isolated-gap law over the summits.
+    std::vector<double> analyse(const FourierTransform &transform, const GridField &heights,
+                                const double E_star, const std::vector<double> &loads,
+                                const ContactSolverControl &control)
+    {
+      GridField tension = full_contact_pressure(transform, heights, E_star);
+      double    V       = 0;
+      for (double &t : tension)
+        {
+          V += t * t / tension.size();
+          t = -t;
+        }
+      const std::vector<Summit> summits   = find_summits(transform, tension);
+      double                    curvature = 0;
+      for (const Summit &summit : summits)
+        curvature += summit.mean_curvature() / summits.size();
+      std::vector<double>    row = {std::sqrt(V), summits.size() / transform.grid().area(), curvature};
+      const HalfSpaceContact contact(transform, heights, E_star);
+      for (const LoadStep &step : load_sweep(contact, loads, control))
+        row.push_back(step.noncontact_fraction);
+      for (const double load : loads)
+        row.push_back(sampled_gap_area(summits, transform.grid().area(), load, 0));
+      return row;
+    }
+
+    struct MeasuredAnalysisScene : Scene
+    {
+      void inputs(Sections &sections) override
+      {
+        measured_surface_section(sections, input);
+        material_section(sections, material);
+        contact_solver_section(sections, control, 1e-8);
+      }
+
+      void entries(Entries &entries) override
+      {
+        entries.increasing_numbers("Mean pressures", mean_pressures, {0.5, 1, 1.5, 2, 3}, 1,
+                                   interval("(]", 0, 100, "sqrt(V)"),
+                                   "p_bar/sqrt(V), V = <p_fc^2> of the prepared map taken as one period. "
+                                   "Units: sqrt(V).");
+        entries.integer(
+            "Twin realisations", n_twins, 8u, 2u, 10000u,
+            "Gaussian twins of the map (its Fourier amplitudes, random phases), spread over the ranks. "
+            "Units: none.");
+        entries.integer("Seed", seed, 1u, 0u, 4294967295u, "The twins' random seed. Units: none.");
+      }
+
+      Verdict run(const ResultFolder &results, std::ostream &log) override
+      {
+        const Topography       topography = prepared_topography(input, log);
+        const double           E_star     = material.plane_strain_modulus();
+        const FourierTransform transform(topography.grid);
+
+        // The map's moments set the scale V and the expectations.
+        const GridField    pressure = full_contact_pressure(transform, topography.heights, E_star);
+        const FieldMoments moments  = sampled_moments(transform, pressure);
+        check_summit_spectrum(moments, "Measured surface/File = " + in_quotes(input.file));
+        const double        sqrt_V = std::sqrt(moments.m0);
+        std::vector<double> loads;
+        for (const double p : mean_pressures)
+          loads.push_back(p * sqrt_V);
+
+        const std::vector<double> map = analyse(transform, topography.heights, E_star, loads, control);
+        const auto twins              = spread_over_ranks(MPI_COMM_WORLD, n_twins, [&](const unsigned int k) {
+          return analyse(transform, gaussian_twin(transform, topography.heights, realisation_seed(seed, k)),
+                                      E_star, loads, control);
+        });
+
+        // The summits.
+        const ExpectedSummits expected = expected_summits(moments);
+        Table                 summits({"surface", "sqrt(V) (Pa)", "summits per area (1/m^2)", "std error",
+                                       "mean summit curvature (Pa/m^2)", "std error"});
+        summits.add_row({"measured map", map[0], map[1], "one map", map[2], "one map"});
+        const Estimate twin_V = mean_over(twins, 0), twin_density = mean_over(twins, 1),
+                       twin_curvature = mean_over(twins, 2);
+        summits.add_row({"Gaussian twins", twin_V.value, twin_density.value, twin_density.standard_error,
+                         twin_curvature.value, twin_curvature.standard_error});
+        summits.add_row({"Kac-Rice from the map's moments", sqrt_V, expected.density, "expectation",
+                         expected.mean_curvature, "expectation"});
+        publish(summits, "measured-analysis-summits.csv", results, log,
+                "Summits of the tension -p_fc of the map and of " + std::to_string(n_twins) +
+                    " Gaussian twins (its Fourier amplitudes, random phases)");
+
+        // The areas: the BEM and the layer's laws.
+        const SpectralMoments continuum = spectral_moments(isotropic_spectrum(topography, false));
+        GapPopulation         laws[2];
+        double                law_sqrt_V[2];
+        for (const Convention convention : {Convention::paper, Convention::consistent})
+          {
+            const PressureSummits s     = pressure_summits(continuum, E_star, convention);
+            laws[int(convention)]       = surface_population(s, 0, convention);
+            law_sqrt_V[int(convention)] = std::sqrt(s.variance);
+          }
+        const std::size_t n_loads = loads.size();
+        Table             areas({"p_bar/sqrtV",
+                                 {"A_nc/A_0 BEM map", {4, true}},
+                                 {"BEM twins", {4, true}},
+                                 {"std error", {2, true}},
+                                 {"isolated gaps map summits", {4, true}},
+                                 {"isolated gaps twin summits", {4, true}},
+                                 {"isolated gaps Kac-Rice", {4, true}},
+                                 {"linear law paper", {4, true}},
+                                 {"linear law consistent", {4, true}},
+                                 {"BEM map/twins", {3}}});
+        for (std::size_t l = 0; l < n_loads; ++l)
+          {
+            const Estimate bem = mean_over(twins, 3 + l), isolated = mean_over(twins, 3 + n_loads + l);
+            areas.add_row({mean_pressures[l], map[3 + l], bem.value, bem.standard_error, map[3 + n_loads + l],
+                           isolated.value, expected_gap_area(moments, loads[l]),
+                           linear_law_noncontact_area(laws[0], loads[l] / law_sqrt_V[0]),
+                           linear_law_noncontact_area(laws[1], loads[l] / law_sqrt_V[1]),
+                           bem.value > 0 ? Table::Cell(map[3 + l] / bem.value, Table::Format{3})
+                                         : Table::Cell("twins: no gaps")});
+          }
+        log << '\n';
+        publish(
+            areas, "measured-analysis.csv", results, log,
+            "Adhesionless non-contact area: the map and its twins (BEM, periodic) beside the layer's laws");
+        log << "Tables: " << results.directory().string()
+            << "/measured-analysis.csv, measured-analysis-summits.csv\n";
+        return {};
+      }
+
+      MeasuredSurfaceInput input;
+      MaterialParameters   material;
+      ContactSolverControl control;
+      std::vector<double>  mean_pressures; // p_bar/sqrt(V)
+      unsigned int         n_twins;
+      unsigned int         seed;
+    };
+  } // namespace
+
+  PENNY_REGISTER_SCENE(
+      MeasuredAnalysisScene, "measured-analysis", "Measured analysis",
+      "the paper's statistical layer on a measured surface beside its Gaussian twins: summits, "
+      "and the adhesionless area-load law against the full solution",
+      "")
+} // namespace penny
