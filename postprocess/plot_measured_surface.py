@@ -2,8 +2,8 @@
 """A measured surface: left, its isotropic PSD C(q) on log axes with the
 power law fitted over the reliable range (shaded); right, the non-contact
 area against the mean pressure of the map taken as one period and as an
-isolated patch. Reads measured-surface.csv, measured-surface-psd.csv and
-measured-surface-contact.csv.
+isolated patch (the period alone on a refined grid). Reads
+measured-surface.csv, measured-surface-psd.csv and measured-surface-contact.csv.
 
 Usage: /usr/bin/python3 postprocess/plot_measured_surface.py OUTPUT_DIR
 writes OUTPUT_DIR/measured-surface.png"""
@@ -41,8 +41,9 @@ spectrum.legend(fontsize=7)
 loads = [row["p_bar/sqrtV"] for row in contact]
 areas.semilogy(loads, [row["A_nc/A_0 periodic"] for row in contact], "bo-", ms=4,
                label="the map as one period (periodic BEM)")
-areas.semilogy(loads, [row["A_nc/A_0 patch"] for row in contact], "gs-", ms=4,
-               label="the map as an isolated patch (DC-FFT BEM)")
+if "A_nc/A_0 patch" in contact[0]:  # not with Refinement > 1
+    areas.semilogy(loads, [row["A_nc/A_0 patch"] for row in contact], "gs-", ms=4,
+                   label="the map as an isolated patch (DC-FFT BEM)")
 areas.set_xlabel(r"mean pressure $\bar p/\sqrt{V}$ (dimensionless)")
 areas.set_ylabel(r"non-contact area $A_{nc}/A_0$ (dimensionless)")
 areas.set_title("adhesionless contact: periodic or isolated", fontsize=9)
