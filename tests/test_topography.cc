@@ -13,6 +13,8 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <sstream>
+#include <utility>
 
 BOOST_AUTO_TEST_SUITE(test_topography)
 
@@ -142,6 +144,54 @@ BOOST_AUTO_TEST_CASE(netcdf)
   BOOST_TEST(
       refused(damaged_copy(scratch, "missing.nc", [](std::string &b) { b.resize(384); }), "is truncated"));
   BOOST_TEST(refused(damaged_copy(scratch, "missing.nc", [](std::string &b) { b.resize(100); }), "NetCDF"));
+}
+
+// The files of a hostile campaign (tests/topography/damaged/, see its
+// README.md): each crashed penny, read damaged data as good, took gigabytes
+// or refused a good file before it was mended.
+BOOST_AUTO_TEST_CASE(the_hostile_campaign_files)
+{
+  const std::string                           damaged    = files + "damaged/";
+  const std::pair<const char *, const char *> refusals[] = {
+      {"crc-damaged.x3p", "'bindata/data.bin' is damaged or truncated (CRC error)"},
+      {"deep-nesting.x3p", "nests its elements deeper than 64 levels"},
+      {"huge-main-xml.x3p", "'main.xml' holds 4294967280 bytes, not at most 16777216"},
+      {"huge-grid.x3p", "holds 48 bytes, not the 800000000 its grid needs"},
+      {"huge-grid.sur", "is truncated: it holds fewer than the 400000000 points"},
+      {"nan-offset.sur", "states the Z offset nan m"},
+      {"length-ten-values.nc", "the attribute 'length' of 'x' holds 10 values, not one"},
+      {"record-truncated.nc", "is truncated or its header damaged"},
+      {"flipped-header.nc", "NetCDF header"},
+      {"infinite-height.nc", "is outside the allowed range [-1e3, 1e3] m"},
+      {"nul-bytes.txt", "is neither numbers nor a '#' comment"}};
+  for (const auto &[file, what] : refusals)
+    BOOST_TEST(refused(damaged + file, what), file);
+  // Good files it refused or misread: a comment before the root element, and heights(y, x).
+  BOOST_TEST(read(damaged + "comment-before-root.x3p").grid.nx == 6u);
+  // Its first row (y = 0) holds 0.18905338, 1.79970738, ..., its first column (x = 0) 0.18905338,
+  // -0.52274844, ...
+  const Topography transposed = read(damaged + "heights-y-x.nc");
+  BOOST_TEST(transposed.grid.nx == 6u);
+  BOOST_TEST(transposed.grid.ny == 4u);
+  BOOST_TEST(transposed.heights[1 * 4 + 0] / transposed.heights[0] == 1.79970738 / 0.18905338,
+             tt::tolerance(1e-6));
+  BOOST_TEST(transposed.heights[0 * 4 + 1] / transposed.heights[0] == -0.52274844 / 0.18905338,
+             tt::tolerance(1e-6));
+
+  // xyz written with six digits is evenly spaced to 1e-3 of a step; a
+  // diagonal of points is not a map.
+  ScratchFolder scratch;
+  std::ofstream(scratch.path / "six-digits.xyz") << [] {
+    std::ostringstream text;
+    text.precision(6);
+    for (int i = 0; i < 40; ++i)
+      for (int j = 0; j < 5; ++j)
+        text << i * (10. / 256) << ' ' << j * (10. / 256) << ' ' << i * j << '\n';
+    return text.str();
+  }();
+  BOOST_TEST(read((scratch.path / "six-digits.xyz").string()).grid.nx == 40u);
+  std::ofstream(scratch.path / "diagonal.xyz") << "0 0 1\n1 1 2\n2 2 3\n3 3 4\n";
+  BOOST_TEST(refused((scratch.path / "diagonal.xyz").string(), "fewer than half of them measured"));
 }
 
 BOOST_AUTO_TEST_CASE(a_text_file_without_a_header_takes_the_size_and_unit_given)

@@ -83,7 +83,14 @@ namespace penny
                        " points as not measured (the allowed choice for this file: fill)");
     if (missing > 0)
       {
-        fill_missing_points(topography);
+        try
+          {
+            fill_missing_points(topography);
+          }
+        catch (const InputError &error)
+          {
+            throw InputError("Measured surface/File = " + in_quotes(input.file) + ": " + error.what());
+          }
         log << "  filled " << missing << " points (" << 100. * missing / grid.n_points()
             << " %) by harmonic interpolation\n";
       }

@@ -1,5 +1,6 @@
 // ContactEngineering's NetCDF topography (SurfaceTopography's NC format): a
-// variable `heights(x, y)` (y the fast index, as a GridField), variables `x`
+// variable `heights(x, y)` (y the fast index, as a GridField; heights(y, x)
+// is transposed), variables `x`
 // and `y` whose attribute `length` is the physical size along them, a length
 // unit in the attribute `unit` (or `length_unit`) of `x` and of `heights`
 // ("m" when absent), and an optional variable `mask(x, y)` whose non-zero
@@ -108,7 +109,9 @@ namespace penny
             skip(number(size_bytes) * size);
           }
       };
-      number(size_bytes); // the record count
+      const std::uint64_t records = number(size_bytes);
+      // Streaming files leave the record count open.
+      const bool                 counted = records != (version == 5 ? ~std::uint64_t(0) : 0xffffffffu);
       std::vector<std::uint64_t> dimensions;
       number(4);
       for (std::uint64_t n = number(size_bytes); n > 0; --n)
@@ -117,7 +120,16 @@ namespace penny
           dimensions.push_back(number(size_bytes));
         }
       attributes();
-      std::uintmax_t end = 0;
+      // Fixed-size variables end at begin + their bytes; a record variable's
+      // last record at begin + (records - 1) record sizes + its bytes per
+      // record (the record size the sum of the record variables' padded
+      // sizes, or the one variable's bytes unpadded).
+      struct Record
+      {
+        std::uint64_t begin, bytes, padded;
+      };
+      std::vector<Record> record_variables;
+      std::uintmax_t      end = 0;
       number(4);
       for (std::uint64_t n = number(size_bytes); n > 0; --n)
         {
@@ -129,16 +141,26 @@ namespace penny
               const std::uint64_t id = number(size_bytes);
               if (id >= dimensions.size())
                 bad_file(filename, "its NetCDF header names a dimension it does not define");
-              record |= dimensions[id] == 0; // the unlimited dimension: stored by records
-              points *= dimensions[id];
+              if (dimensions[id] == 0) // the unlimited dimension: stored by records
+                record = true;
+              else
+                points *= dimensions[id];
             }
           attributes();
-          const std::uint64_t bytes = points * type_size(number(4));
-          number(size_bytes); // vsize, padded
-          const std::uint64_t begin = number(version == 1 ? 4 : 8);
-          if (!record)
+          const std::uint64_t bytes  = points * type_size(number(4));
+          const std::uint64_t padded = number(size_bytes);
+          const std::uint64_t begin  = number(version == 1 ? 4 : 8);
+          if (record)
+            record_variables.push_back({begin, bytes, padded});
+          else
             end = std::max<std::uintmax_t>(end, begin + bytes);
         }
+      std::uint64_t record_size = 0;
+      for (const Record &variable : record_variables)
+        record_size += record_variables.size() == 1 ? variable.bytes : variable.padded;
+      if (counted && records > 0)
+        for (const Record &variable : record_variables)
+          end = std::max<std::uintmax_t>(end, variable.begin + (records - 1) * record_size + variable.bytes);
       return end;
     }
 
@@ -158,10 +180,13 @@ namespace penny
   Topography read_netcdf(const std::string &filename)
   {
     NetcdfFile file{filename};
-    file.check(nc_open(filename.c_str(), NC_NOWRITE, &file.id), "is not a readable NetCDF file");
+    // A classic file's header is checked against its size before libnetcdf
+    // reads it (a damaged header can claim gigabytes).
     if (const std::uintmax_t end = classic_data_end(filename); std::filesystem::file_size(filename) < end)
-      bad_file(filename, "is truncated: " + std::to_string(std::filesystem::file_size(filename)) +
-                             " bytes, its header places data up to byte " + std::to_string(end));
+      bad_file(filename,
+               "is truncated or its header damaged: " + std::to_string(std::filesystem::file_size(filename)) +
+                   " bytes, its header places data up to byte " + std::to_string(end));
+    file.check(nc_open(filename.c_str(), NC_NOWRITE, &file.id), "is not a readable NetCDF file");
     const int heights = file.variable("heights");
     int       n_dimensions;
     file.check(nc_inq_varndims(file.id, heights, &n_dimensions), "the variable 'heights'");
@@ -171,8 +196,16 @@ namespace penny
     int dimensions[2];
     file.check(nc_inq_vardimid(file.id, heights, dimensions), "the variable 'heights'");
     size_t n[2];
+    char   names[2][NC_MAX_NAME + 1];
     for (int k = 0; k < 2; ++k)
-      file.check(nc_inq_dimlen(file.id, dimensions[k], &n[k]), "the dimensions of 'heights'");
+      {
+        file.check(nc_inq_dimlen(file.id, dimensions[k], &n[k]), "the dimensions of 'heights'");
+        file.check(nc_inq_dimname(file.id, dimensions[k], names[k]), "the dimensions of 'heights'");
+      }
+    // heights(y, x): stored with x the fast index, transposed below.
+    const bool transposed = std::string(names[0]) == "y" && std::string(names[1]) == "x";
+    if (transposed)
+      std::swap(n[0], n[1]);
 
     // The physical size along each axis: the attribute `length` of the variable x or y.
     double      lengths[2];
@@ -183,8 +216,14 @@ namespace penny
         if (!file.has_variable(axis))
           bad_file(filename, "has no variable " + in_quotes(axis) + " stating the length along it");
         const int id = file.variable(axis);
-        file.check(nc_get_att_double(file.id, id, "length", &lengths[k]),
+        size_t    values;
+        file.check(nc_inq_attlen(file.id, id, "length", &values),
                    "the variable " + in_quotes(axis) + " states no attribute 'length'");
+        if (values != 1)
+          bad_file(filename, "the attribute 'length' of " + in_quotes(axis) + " holds " +
+                                 std::to_string(values) + " values, not one");
+        file.check(nc_get_att_double(file.id, id, "length", &lengths[k]),
+                   "the attribute 'length' of " + in_quotes(axis));
         lateral_unit = file.text(id, "unit", file.text(id, "length_unit", lateral_unit));
       }
     const std::string height_unit =
@@ -196,6 +235,13 @@ namespace penny
         empty_topography(filename, n[0], n[1], lengths[0] * lateral / std::max<size_t>(n[0], 1),
                          lengths[1] * lateral / std::max<size_t>(n[1], 1));
     file.check(nc_get_var_double(file.id, heights, topography.heights.data()), "the heights cannot be read");
+    if (transposed)
+      {
+        const GridField stored = topography.heights;
+        for (std::size_t i = 0; i < n[0]; ++i)
+          for (std::size_t j = 0; j < n[1]; ++j)
+            topography.heights[i * n[1] + j] = stored[j * n[0] + i];
+      }
     for (double &h : topography.heights)
       h *= vertical;
     if (file.has_variable("mask"))
@@ -209,9 +255,10 @@ namespace penny
              mask_dimensions[0] != dimensions[0] || mask_dimensions[1] != dimensions[1]))
           bad_file(filename, "the variable 'mask' is not on the dimensions of 'heights'");
         file.check(nc_get_var_int(file.id, id, mask.data()), "the mask cannot be read");
-        for (std::size_t k = 0; k < mask.size(); ++k)
-          if (mask[k] != 0)
-            topography.heights[k] = std::numeric_limits<double>::quiet_NaN();
+        for (std::size_t i = 0; i < n[0]; ++i)
+          for (std::size_t j = 0; j < n[1]; ++j)
+            if (mask[transposed ? j * n[0] + i : i * n[1] + j] != 0)
+              topography.heights[i * n[1] + j] = std::numeric_limits<double>::quiet_NaN();
       }
     topography.height_unit = height_unit;
     topography.description = "NetCDF";

@@ -7,9 +7,11 @@
 #include "input/input_error.h"
 #include "topography/topography_formats.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <limits>
 
@@ -84,16 +86,22 @@ namespace penny
     // The spacings in their units (delta x and delta y units at 180 and 196), the heights' at 212.
     const double dx = field<float>(header, 120) * metres(180), dy = field<float>(header, 124) * metres(196),
                  dz = field<float>(header, 128) * metres(212), z0 = field<float>(header, 474) * metres(212);
-    Topography topography = empty_topography(filename, nx, ny, dx, dy);
     if (!(std::isfinite(dz) && dz != 0))
       bad_file(filename, "states the Z spacing " + shortest(dz) + " m (must be finite and not zero)");
-
-    in.seekg(header_size + field<std::uint16_t>(header, 334) + field<std::uint16_t>(header, 336));
-    const std::size_t size = bits / 8, n_x = nx, n_y = ny;
-    std::string       bytes(n_x * n_y * size, '\0');
+    if (!std::isfinite(z0))
+      bad_file(filename, "states the Z offset " + shortest(z0) + " m (must be finite)");
+    // The points must be in the file before the grid is allocated.
+    const std::uintmax_t start =
+        header_size + field<std::uint16_t>(header, 334) + field<std::uint16_t>(header, 336);
+    const std::size_t size = bits / 8, n_x = std::max(nx, 0), n_y = std::max(ny, 0);
+    if (std::filesystem::file_size(filename) < start + std::uintmax_t(n_x) * n_y * size)
+      bad_file(filename, "is truncated: it holds fewer than the " +
+                             std::to_string(std::uintmax_t(n_x) * n_y) + " points its header states");
+    Topography topography = empty_topography(filename, nx, ny, dx, dy);
+    in.seekg(start);
+    std::string bytes(n_x * n_y * size, '\0');
     if (!in.read(bytes.data(), bytes.size()))
-      bad_file(filename, "is truncated: it holds fewer than the " + std::to_string(n_x * n_y) +
-                             " points its header states");
+      bad_file(filename, "could not be read to the end of its points");
     for (std::size_t j = 0; j < n_y; ++j)
       for (std::size_t i = 0; i < n_x; ++i)
         {

@@ -40,11 +40,12 @@ namespace penny
   double metres_per(const std::string &unit)
   {
     static const std::map<std::string, double> units = {
-        {"km", 1e3},       {"m", 1},         {"cm", 1e-2}, {"mm", 1e-3}, {"um", 1e-6},      {"\u00b5m", 1e-6},
-        {"\u03bcm", 1e-6}, {"micron", 1e-6}, {"nm", 1e-9}, {"A", 1e-10}, {"\u00c5", 1e-10}, {"pm", 1e-12}};
+        {"km", 1e3},       {"m", 1},          {"cm", 1e-2},      {"mm", 1e-3},     {"um", 1e-6},
+        {"\u00b5m", 1e-6}, {"\xb5m", 1e-6},   {"\u03bcm", 1e-6}, {"micron", 1e-6}, {"nm", 1e-9},
+        {"A", 1e-10},      {"\u00c5", 1e-10}, {"pm", 1e-12}};
     const auto found = units.find(unit);
     if (found == units.end())
-      throw InputError("the length unit " + in_quotes(unit) +
+      throw InputError("the length unit " + in_quotes(one_line(unit)) +
                        " is none of km, m, cm, mm, um (\u00b5m), nm, A (\u00c5), pm");
     return found->second;
   }
@@ -75,24 +76,46 @@ namespace penny
                  " names no format read here (.txt .asc .dat .csv .xyz .x3p .sur .nc; or set the format)");
   }
 
+  namespace
+  {
+    Topography read_format(const std::string &filename, const TopographyFormat format,
+                           const TextTopography &text)
+    {
+      switch (format == TopographyFormat::automatic ? format_of(filename) : format)
+        {
+        case TopographyFormat::matrix_text:
+          return read_matrix_text(filename, text);
+        case TopographyFormat::xyz_text:
+          return read_xyz_text(filename, text);
+        case TopographyFormat::x3p:
+          return read_x3p(filename);
+        case TopographyFormat::sur:
+          return read_sur(filename);
+        default:
+          return read_netcdf(filename);
+        }
+    }
+  } // namespace
+
   Topography read_topography(const std::string &filename, const TopographyFormat format,
                              const TextTopography &text)
   {
     if (!std::filesystem::is_regular_file(filename))
       bad_file(filename, "does not exist or is not a file");
-    switch (format == TopographyFormat::automatic ? format_of(filename) : format)
-      {
-      case TopographyFormat::matrix_text:
-        return read_matrix_text(filename, text);
-      case TopographyFormat::xyz_text:
-        return read_xyz_text(filename, text);
-      case TopographyFormat::x3p:
-        return read_x3p(filename);
-      case TopographyFormat::sur:
-        return read_sur(filename);
-      default:
-        return read_netcdf(filename);
-      }
+    Topography topography = read_format(filename, format, text);
+    // What a surface measurement can be, and what the roughness and contact
+    // computations hold in double precision (their squares and curvatures).
+    const double dx = topography.grid.lx / topography.grid.nx, dy = topography.grid.ly / topography.grid.ny;
+    if (!(dx >= 1e-12 && dx <= 1e3 && dy >= 1e-12 && dy <= 1e3))
+      bad_file(filename, "pixels of " + shortest(dx) + " m x " + shortest(dy) +
+                             " m (the allowed range: 1e-12 m to 1e3 m a side)");
+    for (std::size_t k = 0; k < topography.heights.size(); ++k)
+      if (const double h = topography.heights[k]; !std::isnan(h) && !(std::abs(h) <= 1e3))
+        bad_file(filename, "the height " + shortest(h) + " m at point (" +
+                               std::to_string(k / topography.grid.ny) + ", " +
+                               std::to_string(k % topography.grid.ny) +
+                               ") is outside the allowed range [-1e3, 1e3] m");
+    return topography;
   }
 
   namespace
@@ -102,6 +125,8 @@ namespace penny
     bool numbers_of(const std::string &line, std::vector<double> &numbers)
     {
       numbers.clear();
+      if (line.find('\0') != std::string::npos)
+        return false;
       const char *p = line.c_str();
       while (true)
         {
@@ -140,17 +165,18 @@ namespace penny
       const double number = std::strtod(value.c_str(), &end);
       std::string  unit   = end;
       unit.erase(0, unit.find_first_not_of(' '));
+      double scale = 0;
       try
         {
-          const double length = number * metres_per(unit);
-          if (!(length > 0 && std::isfinite(length)))
-            bad_file(filename, "'# " + key + ": " + value + "' is not a positive length");
-          return length;
+          scale = metres_per(unit);
         }
       catch (const InputError &error)
         {
-          bad_file(filename, "'# " + key + ": " + value + "': " + error.what());
+          bad_file(filename, "'# " + key + ": " + one_line(value) + "': " + error.what());
         }
+      if (!(number * scale > 0 && std::isfinite(number * scale)))
+        bad_file(filename, "'# " + key + ": " + one_line(value) + "' is not a positive length");
+      return number * scale;
     }
 
     struct TextLines
@@ -171,6 +197,8 @@ namespace penny
       std::vector<double> numbers;
       for (unsigned int number = 1; std::getline(in, line); ++number)
         {
+          if (number == 1 && line.compare(0, 3, "\xef\xbb\xbf") == 0)
+            line.erase(0, 3); // a UTF-8 byte order mark
           if (header_entry(line, key, value))
             {
               if (key == "Width" || key == "Breite")
@@ -239,6 +267,8 @@ namespace penny
         if (lines.rows[k].size() != 3)
           bad_file(filename, "point " + std::to_string(k + 1) + " has " +
                                  std::to_string(lines.rows[k].size()) + " numbers, not the three x y z");
+        if (!std::isfinite(lines.rows[k][0]) || !std::isfinite(lines.rows[k][1]))
+          bad_file(filename, "point " + std::to_string(k + 1) + " has no finite position x y");
         xs.push_back(lines.rows[k][0]);
         ys.push_back(lines.rows[k][1]);
       }
@@ -250,16 +280,21 @@ namespace penny
         bad_file(filename, std::string("the points have one ") + axis + " only");
       const double step = (values.back() - values.front()) / (values.size() - 1);
       for (std::size_t k = 1; k < values.size(); ++k)
-        if (std::abs(values[k] - values[k - 1] - step) > 1e-6 * step)
+        // Within 1e-3 of a step: exports print positions to six digits or so.
+        if (std::abs(values[k] - values[k - 1] - step) > 1e-3 * step)
           bad_file(filename, std::string("the ") + axis + " positions are not evenly spaced (" +
                                  shortest(values[k - 1]) + " to " + shortest(values[k]) + ", the mean step " +
                                  shortest(step) + ")");
       return std::make_pair(values.front(), step);
     };
-    const auto [x0, dx]     = positions(xs, "x");
-    const auto [y0, dy]     = positions(ys, "y");
-    const long long nx      = std::llround((*std::max_element(xs.begin(), xs.end()) - x0) / dx) + 1,
-                    ny      = std::llround((*std::max_element(ys.begin(), ys.end()) - y0) / dy) + 1;
+    const auto [x0, dx] = positions(xs, "x");
+    const auto [y0, dy] = positions(ys, "y");
+    const long long nx  = std::llround((*std::max_element(xs.begin(), xs.end()) - x0) / dx) + 1,
+                    ny  = std::llround((*std::max_element(ys.begin(), ys.end()) - y0) / dy) + 1;
+    // A grid position without a point is not measured; a grid mostly empty is not a map.
+    if (2. * lines.rows.size() < double(nx) * ny)
+      bad_file(filename, std::to_string(lines.rows.size()) + " points on a grid of " + std::to_string(nx) +
+                             " x " + std::to_string(ny) + " positions: fewer than half of them measured");
     const double scale      = metres_per(lines.unit);
     Topography   topography = empty_topography(filename, nx, ny, dx * scale, dy * scale);
     std::fill(topography.heights.begin(), topography.heights.end(), std::numeric_limits<double>::infinity());

@@ -25,24 +25,55 @@ namespace penny
   {
     using Archive = std::unique_ptr<zip_t, decltype(&zip_discard)>;
 
-    // The whole of one member of the archive; `expected` bytes unless 0.
-    std::string member(const std::string &filename, zip_t *archive, const std::string &name)
+    // The whole of one member of the archive, whose size must be `size` or, if
+    // `size` is 0, at most `largest` bytes (its header's claim is checked
+    // before anything is allocated).
+    std::string member(const std::string &filename, zip_t *archive, const std::string &name,
+                       const zip_uint64_t size, const zip_uint64_t largest = 0)
     {
       zip_stat_t stat;
       zip_stat_init(&stat);
       if (zip_stat(archive, name.c_str(), 0, &stat) != 0 || !(stat.valid & ZIP_STAT_SIZE))
         bad_file(filename, "the archive holds no " + in_quotes(name));
+      if (size ? stat.size != size : stat.size > largest)
+        bad_file(filename, in_quotes(name) + " holds " + std::to_string(stat.size) + " bytes, not " +
+                               (size ? "the " + std::to_string(size) + " its grid needs"
+                                     : "at most " + std::to_string(largest)));
       std::unique_ptr<zip_file_t, decltype(&zip_fclose)> file(zip_fopen(archive, name.c_str(), 0),
                                                               &zip_fclose);
       if (!file)
         bad_file(filename, in_quotes(name) + " cannot be opened: " + zip_strerror(archive));
       std::string bytes(stat.size, '\0');
-      // zip_fread checks the member's CRC at its end: a damaged member is an error here.
+      // libzip checks the member's CRC when a read reaches its end: the read
+      // past the last byte must find the end, not an error.
+      char              beyond;
       const zip_int64_t read = zip_fread(file.get(), bytes.data(), bytes.size());
-      if (read != static_cast<zip_int64_t>(bytes.size()) || zip_fread(file.get(), nullptr, 0) < 0)
-        bad_file(filename,
-                 in_quotes(name) + " is damaged or truncated (" + zip_file_strerror(file.get()) + ")");
+      if (read != static_cast<zip_int64_t>(bytes.size()) || zip_fread(file.get(), &beyond, 1) != 0)
+        bad_file(filename, in_quotes(name) + " is damaged or truncated" +
+                               (zip_file_get_error(file.get())->zip_err != ZIP_ER_OK
+                                    ? " (" + std::string(zip_file_strerror(file.get())) + ")"
+                                    : std::string()));
       return bytes;
+    }
+
+    // The deepest nesting of elements in an XML text, without parsing it
+    // (Boost's parser recurses once per level).
+    std::size_t nesting_depth(const std::string &xml)
+    {
+      std::size_t depth = 0, deepest = 0;
+      for (std::size_t k = 0; k + 1 < xml.size(); ++k)
+        if (xml[k] == '<')
+          {
+            if (xml[k + 1] == '/')
+              depth -= depth > 0;
+            else if (xml[k + 1] != '!' && xml[k + 1] != '?')
+              {
+                const auto close = xml.find('>', k);
+                if (close != std::string::npos && xml[close - 1] != '/')
+                  deepest = std::max(deepest, ++depth);
+              }
+          }
+      return deepest;
     }
 
     template <typename Integer> Integer little_endian(const char *bytes)
@@ -93,8 +124,12 @@ namespace penny
       }
 
     namespace pt = boost::property_tree;
-    pt::ptree          document;
-    std::istringstream xml(member(filename, archive.get(), "main.xml"));
+    pt::ptree document;
+    // main.xml states a few dozen values: megabytes or deep nesting are not one.
+    const std::string main_xml = member(filename, archive.get(), "main.xml", 0, 1 << 24);
+    if (nesting_depth(main_xml) > 64)
+      bad_file(filename, "main.xml nests its elements deeper than 64 levels");
+    std::istringstream xml(main_xml);
     try
       {
         pt::read_xml(xml, document);
@@ -103,10 +138,13 @@ namespace penny
       {
         bad_file(filename, "main.xml, line " + std::to_string(parse.line()) + ": " + parse.message());
       }
-    // The root element carries the namespace's prefix (p:ISO5436_2); its records do not.
-    if (document.empty())
-      bad_file(filename, "main.xml is empty");
-    const pt::ptree &root = document.front().second;
+    // The root element carries the namespace's prefix (p:ISO5436_2); its
+    // records do not. Comments before it are nodes of their own.
+    const auto root_node = std::find_if(document.begin(), document.end(),
+                                        [](const auto &node) { return node.first.compare(0, 1, "<") != 0; });
+    if (root_node == document.end())
+      bad_file(filename, "main.xml has no root element");
+    const pt::ptree &root = root_node->second;
     const auto       text = [&](const std::string &path) {
       const auto found = root.get_optional<std::string>(path);
       if (!found)
@@ -117,7 +155,8 @@ namespace penny
       const std::string value = text(path);
       char             *end;
       const double      x = std::strtod(value.c_str(), &end);
-      if (end == value.c_str() || !std::isfinite(x))
+      if (end == value.c_str() ||
+          value.find_first_not_of(" \t\r\n", end - value.c_str()) != std::string::npos || !std::isfinite(x))
         bad_file(filename, "main.xml: " + path + " = " + in_quotes(value) + " is not a number");
       return x;
     };
@@ -143,6 +182,8 @@ namespace penny
                  offset    = integers && root.get_optional<std::string>("Record1.Axes.CZ.Offset")
                                  ? number("Record1.Axes.CZ.Offset")
                                  : 0.;
+    if (increment == 0)
+      bad_file(filename, "main.xml: Record1/Axes/CZ/Increment = 0 (the heights' step must not vanish)");
     const double nx = number("Record3.MatrixDimension.SizeX"), ny = number("Record3.MatrixDimension.SizeY"),
                  nz = number("Record3.MatrixDimension.SizeZ");
     if (nz != 1)
@@ -154,25 +195,23 @@ namespace penny
     if (root.get_child_optional("Record3.DataList"))
       bad_file(filename, "the heights are listed in main.xml (Record3/DataList); binary heights "
                          "(Record3/DataLink) are read here");
-    Topography topography =
-        empty_topography(filename, static_cast<long long>(nx), static_cast<long long>(ny),
-                         number("Record1.Axes.CX.Increment"), number("Record1.Axes.CY.Increment"));
-
+    if (nx < 3 || ny < 3)
+      bad_file(filename, "a grid of " + shortest(nx) + " x " + shortest(ny) +
+                             " points (a height map needs 3 x 3 to 2^31 points)");
+    // The heights before the grid is allocated: their member must be as large as the grid says.
     const std::size_t size = type == 'I'                  ? 2
                              : type == 'L' || type == 'F' ? 4
                                                           : 8,
-                      n_x = topography.grid.nx, n_y = topography.grid.ny;
-    const std::string bytes = member(filename, archive.get(), text("Record3.DataLink.PointDataLink"));
-    if (bytes.size() != n_x * n_y * size)
-      bad_file(filename, in_quotes(text("Record3.DataLink.PointDataLink")) + " holds " +
-                             std::to_string(bytes.size()) + " bytes, not the " +
-                             std::to_string(n_x * n_y * size) + " of " + std::to_string(n_x) + " x " +
-                             std::to_string(n_y) + " heights of type " + type);
+                      n_x = static_cast<std::size_t>(nx), n_y = static_cast<std::size_t>(ny);
+    const std::string bytes =
+        member(filename, archive.get(), text("Record3.DataLink.PointDataLink"), n_x * n_y * size);
+    Topography topography = empty_topography(filename, n_x, n_y, number("Record1.Axes.CX.Increment"),
+                                             number("Record1.Axes.CY.Increment"));
     // The valid points, one bit each (the lowest bit of a byte first), if the file marks them.
     std::string valid;
     if (const auto link = root.get_optional<std::string>("Record3.DataLink.ValidPointsLink"))
       {
-        valid = member(filename, archive.get(), *link);
+        valid = member(filename, archive.get(), *link, 0, (n_x * n_y + 7) / 8 + 4096);
         if (valid.size() < (n_x * n_y + 7) / 8)
           bad_file(filename, in_quotes(*link) + " holds " + std::to_string(valid.size()) +
                                  " bytes, fewer than one bit per point");
