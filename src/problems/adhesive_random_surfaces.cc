@@ -75,6 +75,18 @@ namespace penny
   {
     const double q0 = surfaces.spectrum.wavenumbers.front(), q1 = surfaces.spectrum.wavenumbers.back();
     const double period = 2 * M_PI / q0, shortest = 2 * M_PI / q1;
+    // The surface on a grid that holds every mode of the spectrum, then on each zone's.
+    const FourierTransform base(square_grid(power_of_two_above(4 * q1 / q0), period));
+    return solve_surface(
+        surfaces, base, gaussian_field(base, surfaces.spectrum, seed), shortest,
+        [&](const double zone) { return square_grid(surfaces.grid_points(zone), period); }, fields);
+  }
+
+  RealisationAreas solve_surface(const AdhesiveRandomSurfaces &surfaces, const FourierTransform &base,
+                                 const GridField &heights, const double shortest,
+                                 const std::function<PeriodicGrid(double zone)> &zone_grid,
+                                 RealisationFields                             *fields)
+  {
     const double work = surfaces.critical_intensity * surfaces.critical_intensity / (2 * surfaces.E_star);
     std::vector<double> loads, shifted_loads;
     for (const double p : surfaces.mean_pressures)
@@ -83,16 +95,11 @@ namespace penny
         shifted_loads.push_back(p * surfaces.sqrt_V + surfaces.p0);
       }
 
-    // The surface on a grid that holds every mode of the spectrum, then on each zone's.
-    const FourierTransform base(square_grid(power_of_two_above(4 * q1 / q0), period));
-    const GridField        heights = gaussian_field(base, surfaces.spectrum, seed);
-
     RealisationAreas areas;
     areas.iterations = 0;
     for (std::size_t z = 0; z < surfaces.zones.lengths.size(); ++z)
       {
-        const FourierTransform transform(
-            square_grid(surfaces.grid_points(surfaces.zones.lengths[z]), period));
+        const FourierTransform transform(zone_grid(surfaces.zones.lengths[z]));
         const GridField h  = resampled(base, transform, heights);
         const double range = std::sqrt(M_PI * work * surfaces.zones.lengths[z] * shortest / surfaces.E_star);
         const HalfSpaceContact adhesionless(transform, h, surfaces.E_star);

@@ -13,6 +13,7 @@
 #include "statistics/summit_statistics.h"
 
 #include <cstdint>
+#include <functional>
 #include <vector>
 
 namespace penny
@@ -74,6 +75,14 @@ namespace penny
   // surfaces separate.
   RealisationAreas solve_realisation(const AdhesiveRandomSurfaces &surfaces, std::uint64_t seed,
                                      RealisationFields *fields = nullptr);
+
+  // The same for any band-limited surface: `heights` on the grid of `base`,
+  // resampled onto zone_grid(l_pz/lambda1) for each cohesive zone, lambda1 =
+  // `shortest` (m), the surfaces' spectrum unused (a measured surface).
+  RealisationAreas solve_surface(const AdhesiveRandomSurfaces &surfaces, const FourierTransform &base,
+                                 const GridField &heights, double shortest,
+                                 const std::function<PeriodicGrid(double zone)> &zone_grid,
+                                 RealisationFields *fields = nullptr);
 
   // The JKR limit of one branch at one load over realisations: the mean
   // area at each cohesive zone, the leading order the last three means show

@@ -23,48 +23,11 @@
 #include <deal.II/base/mpi.h>
 
 #include <cmath>
-#include <complex>
-#include <cstdint>
-#include <random>
 
 namespace penny
 {
   namespace
   {
-    // A Gaussian twin of the map: its Fourier coefficients with random phases
-    // (a phase-randomised surrogate), so the same power at every wavevector,
-    // anisotropy included, and the same V and moments, with heights that a
-    // sum of many independent phases makes Gaussian. On the lines ky = 0 and
-    // ky = ny/2 the phases of kx and -kx are opposite (a real field); the
-    // coefficients that must be real keep theirs.
-    GridField gaussian_twin(const FourierTransform &transform, const GridField &heights,
-                            const std::uint64_t seed)
-    {
-      FourierTransform::Spectrum             spectrum = transform.forward(heights);
-      std::mt19937_64                        random(seed);
-      std::uniform_real_distribution<double> angle(0, 2 * M_PI);
-      const unsigned int                     nx = transform.grid().nx;
-      std::vector<double>                    line_phases[2];
-      for (auto &phases : line_phases)
-        for (unsigned int kx = 0; kx <= nx / 2; ++kx)
-          phases.push_back(angle(random));
-      for (std::size_t c = 0; c < spectrum.size(); ++c)
-        {
-          const Wavevector q = transform.wavevector(c);
-          double           phase;
-          if (q.ky == 0 || q.nyquist_y)
-            {
-              if (q.kx == 0 || q.nyquist_x)
-                continue;
-              phase = (q.kx > 0 ? 1 : -1) * line_phases[q.ky == 0 ? 0 : 1][std::abs(q.kx)];
-            }
-          else
-            phase = angle(random);
-          spectrum[c] *= std::polar(1., phase);
-        }
-      return transform.inverse(spectrum);
-    }
-
     // Per surface: sqrt(V), the summits' density and mean curvature, then per
     // load the BEM's A_nc/A_0 and the isolated-gap law over the summits.
     std::vector<double> analyse(const FourierTransform &transform, const GridField &heights,

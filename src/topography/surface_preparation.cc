@@ -6,7 +6,9 @@
 #include <Eigen/SparseCholesky>
 
 #include <cmath>
+#include <complex>
 #include <limits>
+#include <random>
 #include <vector>
 
 namespace penny
@@ -157,6 +159,34 @@ namespace penny
           psd.densities.push_back(sums[b] / counts[b]);
         }
     return psd;
+  }
+
+  GridField gaussian_twin(const FourierTransform &transform, const GridField &heights,
+                          const std::uint64_t seed)
+  {
+    FourierTransform::Spectrum             spectrum = transform.forward(heights);
+    std::mt19937_64                        random(seed);
+    std::uniform_real_distribution<double> angle(0, 2 * M_PI);
+    const unsigned int                     nx = transform.grid().nx;
+    std::vector<double>                    line_phases[2];
+    for (auto &phases : line_phases)
+      for (unsigned int kx = 0; kx <= nx / 2; ++kx)
+        phases.push_back(angle(random));
+    for (std::size_t c = 0; c < spectrum.size(); ++c)
+      {
+        const Wavevector q = transform.wavevector(c);
+        double           phase;
+        if (q.ky == 0 || q.nyquist_y)
+          {
+            if (q.kx == 0 || q.nyquist_x)
+              continue;
+            phase = (q.kx > 0 ? 1 : -1) * line_phases[q.ky == 0 ? 0 : 1][std::abs(q.kx)];
+          }
+        else
+          phase = angle(random);
+        spectrum[c] *= std::polar(1., phase);
+      }
+    return transform.inverse(spectrum);
   }
 
   WavenumberRange reliable_range(const Topography &topography)

@@ -8,6 +8,7 @@
 #include "topography/topography.h"
 
 #include <cstddef>
+#include <cstdint>
 
 namespace penny
 {
@@ -58,6 +59,14 @@ namespace penny
     double q_low, q_high; // 1/m
   };
   WavenumberRange reliable_range(const Topography &topography);
+
+  // A Gaussian twin of a map taken as one period: its Fourier coefficients
+  // with random phases (a phase-randomised surrogate), so the same power at
+  // every wavevector, anisotropy included, the same V and moments, and
+  // heights that a sum of many independent phases makes Gaussian. On the
+  // lines ky = 0 and ky = ny/2 the phases of kx and -kx are opposite (a real
+  // field); the coefficients that must be real keep theirs.
+  GridField gaussian_twin(const FourierTransform &transform, const GridField &heights, std::uint64_t seed);
 
   // The least-squares line through log C against log q over the bins inside
   // `range`: C = C0 (q/q_low)^(-2(1 + H)), and how well it fits.
