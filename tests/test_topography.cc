@@ -243,6 +243,18 @@ BOOST_AUTO_TEST_CASE(harmonic_filling_and_detrending_are_exact_on_polynomials)
   BOOST_CHECK_THROW(fill_missing_points(none), InputError);
 }
 
+BOOST_AUTO_TEST_CASE(a_crop_keeps_its_points_on_its_own_rectangle)
+{
+  const Topography whole = read(files + "doubles.x3p"), part = cropped(whole, 1, 4, 2, 4);
+  BOOST_TEST(part.grid.nx == 3u);
+  BOOST_TEST(part.grid.ny == 2u);
+  BOOST_TEST(part.grid.lx == 1.5e-6, tt::tolerance(1e-12));
+  BOOST_TEST(part.grid.ly == 0.5e-6, tt::tolerance(1e-12));
+  for (unsigned int i = 0; i < 3; ++i)
+    for (unsigned int j = 0; j < 2; ++j)
+      BOOST_TEST(part.heights[i * 2 + j] == whole.heights[(i + 1) * 4 + j + 2]);
+}
+
 BOOST_AUTO_TEST_CASE(rms_parameters_on_their_stencils)
 {
   // h = a x + b y on non-square pixels: forward differences are exact, the

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <sstream>
 
 namespace penny
 {
@@ -30,6 +31,24 @@ namespace penny
       entries.text("Text unit", input.text.unit, "m",
                    "The length unit of the numbers of a text file that states none ('# Value units:'): "
                    "km, m, cm, mm, um, nm, A or pm; of x, y and z in xyz text.");
+      std::string crop_text;
+      entries.text(
+          "Crop", crop_text, "0, 1, 0, 1",
+          "x0, x1, y0, y1: the part of the map kept, x0 lx <= x < x1 lx and y0 ly <= y < y1 ly "
+          "(rounded to whole points, 3 a side at least), before it is filled and detrended; 0, 1, 0, 1: "
+          "the whole map. Units: fractions of the map's sides.");
+      if (entries.reading())
+        {
+          std::istringstream numbers(crop_text);
+          char               comma;
+          double            *c = input.crop;
+          if (!(numbers >> c[0] >> comma >> c[1] >> comma >> c[2] >> comma >> c[3]) ||
+              !(numbers >> std::ws).eof() ||
+              !(0 <= c[0] && c[0] < c[1] && c[1] <= 1 && 0 <= c[2] && c[2] < c[3] && c[3] <= 1))
+            throw InputError("Measured surface/Crop = " + in_quotes(crop_text) +
+                             " is outside the allowed range x0, x1, y0, y1 with 0 <= x0 < x1 <= 1 and "
+                             "0 <= y0 < y1 <= 1");
+        }
       entries.choice("Missing points", input.fill_missing, false, {{"refuse", false}, {"fill", true}},
                      "Points the file marks as not measured: refuse the map, or fill them by harmonic "
                      "interpolation from the measured ones (how many is printed).");
@@ -70,6 +89,23 @@ namespace penny
     catch (const InputError &error)
       {
         throw InputError("Measured surface/File = " + std::string(error.what()));
+      }
+    if (input.crop[0] > 0 || input.crop[1] < 1 || input.crop[2] > 0 || input.crop[3] < 1)
+      {
+        const PeriodicGrid &whole = topography.grid;
+        const unsigned int  i0    = std::lround(input.crop[0] * whole.nx),
+                           i1     = std::lround(input.crop[1] * whole.nx),
+                           j0     = std::lround(input.crop[2] * whole.ny),
+                           j1     = std::lround(input.crop[3] * whole.ny);
+        if (i1 < i0 + 3 || j1 < j0 + 3)
+          throw InputError("Measured surface/Crop = " + shortest(input.crop[0]) + ", " +
+                           shortest(input.crop[1]) + ", " + shortest(input.crop[2]) + ", " +
+                           shortest(input.crop[3]) + " keeps " + std::to_string(i1 - i0) + " x " +
+                           std::to_string(j1 - j0) + " of the " + std::to_string(whole.nx) + " x " +
+                           std::to_string(whole.ny) + " points (the allowed range: 3 a side at least)");
+        log << "Cropped to points " << i0 << " ... " << i1 - 1 << " along x and " << j0 << " ... " << j1 - 1
+            << " along y of the map's " << whole.nx << " x " << whole.ny << '\n';
+        topography = cropped(topography, i0, i1, j0, j1);
       }
     const PeriodicGrid &grid    = topography.grid;
     const std::size_t   missing = missing_points(topography);

@@ -16,6 +16,7 @@ namespace penny
     std::string      file;
     TopographyFormat format;
     TextTopography   text;
+    double           crop[4];      // x0, x1, y0, y1: the part of the map kept, in fractions of its sides
     bool             fill_missing; // fill the points not measured, or refuse a map with any
     Detrending       detrending;
     bool             hann_window; // of the PSD
@@ -24,7 +25,7 @@ namespace penny
   // Measured surface. Once read, the file must exist.
   void measured_surface_section(Sections &sections, MeasuredSurfaceInput &input);
 
-  // The topography read and prepared (filled, detrended) as `input` says,
+  // The topography read and prepared (cropped, filled, detrended) as `input` says,
   // with a line on `log` of what was read and done. Throws InputError naming
   // Measured surface/File for a file that cannot be read, and Measured
   // surface/Missing points for a map with points not measured that is not to be filled.

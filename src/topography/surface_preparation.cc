@@ -13,6 +13,19 @@
 
 namespace penny
 {
+  Topography cropped(const Topography &topography, const unsigned int i0, const unsigned int i1,
+                     const unsigned int j0, const unsigned int j1)
+  {
+    const PeriodicGrid &grid = topography.grid;
+    Topography          part = topography;
+    part.grid = {i1 - i0, j1 - j0, grid.lx * (i1 - i0) / grid.nx, grid.ly * (j1 - j0) / grid.ny};
+    part.heights.clear();
+    for (unsigned int i = i0; i < i1; ++i)
+      part.heights.insert(part.heights.end(), topography.heights.begin() + std::size_t(i) * grid.ny + j0,
+                          topography.heights.begin() + std::size_t(i) * grid.ny + j1);
+    return part;
+  }
+
   std::size_t fill_missing_points(Topography &topography)
   {
     const std::size_t nx = topography.grid.nx, ny = topography.grid.ny;

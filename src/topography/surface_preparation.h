@@ -12,6 +12,11 @@
 
 namespace penny
 {
+  // The points i0 <= i < i1 (along x) and j0 <= j < j1 (along y) of a map, on
+  // their own rectangle.
+  Topography cropped(const Topography &topography, unsigned int i0, unsigned int i1, unsigned int j0,
+                     unsigned int j1);
+
   // Fills the points not measured (NaN) by harmonic interpolation: Laplace's
   // equation on the five-point stencil over them, the measured points their
   // boundary values, no flux across the map's edges (a sparse Cholesky, Eigen).
