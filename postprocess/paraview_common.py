@@ -74,6 +74,35 @@ def mesh_coloured_by_component(view, source, component, edge_grey, title, positi
     return lut
 
 
+def side_by_side(view, source, data, field, colours, bar_title):
+    """`source` (whose fetched data is `data`) twice in `view`, left and right
+    (a copy shifted by 1.08 of its larger side), both coloured by `field`
+    with the colour map `colours`; the camera on both. Returns the two sources."""
+    x0, x1, y0, y1 = data.GetBounds()[:4]
+    side = max(x1 - x0, y1 - y0)
+    right = pv.Transform(Input=source)
+    right.Transform.Translate = [1.08 * side, 0, 0]
+    for shown in (source, right):
+        display = pv.Show(shown, view)
+        display.SetRepresentationType("Slice")
+        pv.ColorBy(display, ("POINTS", field))
+        # Unlit: the shifted copy is no image any more, and lighting would grey it.
+        display.Ambient, display.Diffuse = 1.0, 0.0
+    colour_bar(view, display, colours, bar_title, [0.93, 0.1])
+    look_at(view, [(x0 + x1 + 1.08 * side) / 2, (y0 + y1) / 2, 0], 0.58 * side, 10 * side)
+    return source, right
+
+
+def dark_where_positive(view, source, field):
+    """The points of `source` where `field` (a gap) is positive, dark and half transparent."""
+    positive = pv.Threshold(Input=source, Scalars=["POINTS", field], LowerThreshold=1e-300, UpperThreshold=1e300)
+    display = pv.Show(positive, view)
+    pv.ColorBy(display, None)
+    display.AmbientColor = display.DiffuseColor = [0.1, 0.1, 0.1]
+    display.Opacity = 0.75
+    return positive
+
+
 def title(view, text, font_size=13):
     """A black title at the top of the view; its text can be changed later."""
     label = pv.Text(Text=text)

@@ -158,6 +158,10 @@ namespace penny
                 << " iterations at the residual " << residual << " (tolerance " << control.tolerance << ")";
         throw ContactSolverFailure(message.str());
       }
+    // The gap as the solution states it: zero on the contact points, and no
+    // overlap (within the tolerance) elsewhere.
+    for (std::size_t k = 0; k < n; ++k)
+      separation[k] = p[k] > 0 ? 0 : std::max(0., separation[k]);
     const auto contacts = std::count_if(p.begin(), p.end(), [](const double value) { return value > 0; });
     return {p, separation, approach, double(contacts) / n, iteration, residual};
   }

@@ -22,7 +22,7 @@ namespace penny
   struct NonperiodicSolution
   {
     GridField    pressure;         // Pa, >= 0, on the patch's points
-    GridField    separation;       // m, >= 0, zero where pressure > 0
+    GridField    separation;       // m, >= 0, exactly zero where pressure > 0
     double       approach;         // delta (m): the rigid body's approach, up to the heights' datum
     double       contact_fraction; // share of the patch's points in contact
     unsigned int iterations;
