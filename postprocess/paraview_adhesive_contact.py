@@ -36,11 +36,11 @@ label = title(view, "")
 for k, name in enumerate(adhesive, start=1):
     load = name[len("gap with adhesion at "):-4]
     without = "gap without adhesion at " + load + " (m)"
-    shown = [dark_where_positive(view, right, name)]
+    shown = [dark_where_positive(view, right, data, name)]
     share = (numpy.asarray(data.PointData[name]) > 0).mean()
     text = f"with adhesion (right): {share:.3f} of the points"
     if without in names:
-        shown.append(dark_where_positive(view, left, without))
+        shown.append(dark_where_positive(view, left, data, without))
         text = (f"without adhesion (left): {(numpy.asarray(data.PointData[without]) > 0).mean():.3f}, "
                 + text)
     else:
@@ -48,4 +48,5 @@ for k, name in enumerate(adhesive, start=1):
     label.Text = f"first realisation, gaps (dark, gap > 0) at {load}: {text}"
     save(view, pictures / f"picture-adhesive-gaps-{k}.png", size)
     for gaps in shown:
-        pv.Hide(gaps, view)
+        if gaps is not None:
+            pv.Hide(gaps, view)

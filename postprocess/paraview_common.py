@@ -4,6 +4,7 @@ as numpy arrays. For pvpython (ParaView's Python), offscreen under Xvfb."""
 import pathlib
 import sys
 
+import numpy
 import paraview.simple as pv
 from paraview import servermanager
 from vtk.numpy_interface import dataset_adapter as dsa
@@ -93,8 +94,12 @@ def side_by_side(view, source, data, field, colours, bar_title):
     return source, right
 
 
-def dark_where_positive(view, source, field):
-    """The points of `source` where `field` (a gap) is positive, dark and half transparent."""
+def dark_where_positive(view, source, data, field):
+    """The points of `source` (whose fetched data is `data`) where `field` (a
+    gap) is positive, dark and half transparent; None where there are none
+    (ParaView cannot colour an empty threshold)."""
+    if not (numpy.asarray(data.PointData[field]) > 0).any():
+        return None
     positive = pv.Threshold(Input=source, Scalars=["POINTS", field], LowerThreshold=1e-300, UpperThreshold=1e300)
     display = pv.Show(positive, view)
     pv.ColorBy(display, None)

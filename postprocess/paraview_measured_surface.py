@@ -34,10 +34,11 @@ label = title(view, "")
 for k, name in enumerate(periodic, start=1):
     load = name[len("gap periodic at "):-4]
     patch = "gap patch at " + load + " (m)"
-    shown = [dark_where_positive(view, left, name), dark_where_positive(view, right, patch)]
+    shown = [dark_where_positive(view, left, data, name), dark_where_positive(view, right, data, patch)]
     shares = [(numpy.asarray(data.PointData[field]) > 0).mean() for field in (name, patch)]
     label.Text = (f"gaps (dark) at {load}: the map as one period (left) {shares[0]:.3f}, "
                   f"as an isolated patch (right) {shares[1]:.3f} of the points")
     save(view, pictures / f"picture-measured-gaps-{k}.png", size)
     for gaps in shown:
-        pv.Hide(gaps, view)
+        if gaps is not None:
+            pv.Hide(gaps, view)
