@@ -85,7 +85,7 @@ namespace penny
   RealisationAreas solve_surface(const AdhesiveRandomSurfaces &surfaces, const FourierTransform &base,
                                  const GridField &heights, const double shortest,
                                  const std::function<PeriodicGrid(double zone)> &zone_grid,
-                                 RealisationFields                             *fields)
+                                 RealisationFields                              *fields)
   {
     const double work = surfaces.critical_intensity * surfaces.critical_intensity / (2 * surfaces.E_star);
     std::vector<double> loads, shifted_loads;
@@ -100,17 +100,14 @@ namespace penny
     for (std::size_t z = 0; z < surfaces.zones.lengths.size(); ++z)
       {
         const FourierTransform transform(zone_grid(surfaces.zones.lengths[z]));
-        const GridField h  = resampled(base, transform, heights);
+        const GridField        h = resampled(base, transform, heights);
         const double range = std::sqrt(M_PI * work * surfaces.zones.lengths[z] * shortest / surfaces.E_star);
         const HalfSpaceContact adhesionless(transform, h, surfaces.E_star);
         const HalfSpaceContact adhesive(transform, h, surfaces.E_star, Adhesion{work, range});
         if (z == 0)
           {
             // Summits of the tension -p_fc, on the coarsest of the zones' grids.
-            GridField tension = full_contact_pressure(transform, h, surfaces.E_star);
-            for (double &t : tension)
-              t = -t;
-            const std::vector<Summit> summits = find_summits(transform, tension);
+            const std::vector<Summit> summits = tension_summits(transform, h, surfaces.E_star).summits;
             for (const double p_bar : loads)
               areas.isolated_gaps.push_back(
                   sampled_gap_area(summits, transform.grid().area(), p_bar, surfaces.critical_intensity));

@@ -133,20 +133,14 @@ namespace penny
             for (std::size_t c = 0; c < modes.size(); ++c)
               if (base.wavevector(c).norm() > fraction * q_max * (1 + 1e-12))
                 modes[c] = 0;
-            one.heights                = base.inverse(modes);
-            GridField          tension = full_contact_pressure(base, one.heights, E_star);
-            const FieldMoments moments = sampled_moments(base, tension);
+            one.heights                  = base.inverse(modes);
+            const TensionSummits tension = tension_summits(base, one.heights, E_star);
+            const FieldMoments  &moments = tension.moments;
             check_summit_spectrum(moments,
                                   "Measured adhesion/Magnification fractions = " + shortest_text(fraction) +
                                       " with Measured surface/File = " + in_quotes(input.file));
-            for (double &t : tension)
-              t = -t;
-            double                    curvature = 0;
-            const std::vector<Summit> summits   = find_summits(base, tension);
-            for (const Summit &summit : summits)
-              curvature += summit.mean_curvature() / summits.size();
             one.sqrt_V  = std::sqrt(moments.m0);
-            one.R_map   = 1 / curvature;
+            one.R_map   = 1 / tension.mean_curvature;
             one.R_twins = 1 / expected_summits(moments).mean_curvature;
             cases.push_back(one);
           }

@@ -34,23 +34,14 @@ namespace penny
                                 const double E_star, const std::vector<double> &loads,
                                 const ContactSolverControl &control)
     {
-      GridField tension = full_contact_pressure(transform, heights, E_star);
-      double    V       = 0;
-      for (double &t : tension)
-        {
-          V += t * t / tension.size();
-          t = -t;
-        }
-      const std::vector<Summit> summits   = find_summits(transform, tension);
-      double                    curvature = 0;
-      for (const Summit &summit : summits)
-        curvature += summit.mean_curvature() / summits.size();
-      std::vector<double>    row = {std::sqrt(V), summits.size() / transform.grid().area(), curvature};
+      const TensionSummits   tension = tension_summits(transform, heights, E_star);
+      std::vector<double>    row     = {std::sqrt(tension.moments.m0),
+                                        tension.summits.size() / transform.grid().area(), tension.mean_curvature};
       const HalfSpaceContact contact(transform, heights, E_star);
       for (const LoadStep &step : load_sweep(contact, loads, control))
         row.push_back(step.noncontact_fraction);
       for (const double load : loads)
-        row.push_back(sampled_gap_area(summits, transform.grid().area(), load, 0));
+        row.push_back(sampled_gap_area(tension.summits, transform.grid().area(), load, 0));
       return row;
     }
 

@@ -1,6 +1,7 @@
 #include "statistics/summit_statistics.h"
 
 #include "closed_forms/adhesive_gap.h"
+#include "contact/half_space.h"
 
 #include <boost/math/quadrature/gauss_kronrod.hpp>
 
@@ -391,5 +392,17 @@ namespace penny
           sum += M_PI * *c * *c;
       }
     return sum / area;
+  }
+
+  TensionSummits tension_summits(const FourierTransform &transform, const GridField &heights,
+                                 const double E_star)
+  {
+    GridField tension = full_contact_pressure(transform, heights, E_star);
+    for (double &t : tension)
+      t = -t;
+    TensionSummits result{sampled_moments(transform, tension), find_summits(transform, tension), 0};
+    for (const Summit &summit : result.summits)
+      result.mean_curvature += summit.mean_curvature() / result.summits.size();
+    return result;
   }
 } // namespace penny

@@ -144,4 +144,16 @@ namespace penny
   // that summit; c^2 = 3 R_p P without adhesion, K_Ic = 0). Returns the gaps'
   // area over `area`.
   double sampled_gap_area(const std::vector<Summit> &summits, double area, double mean_pressure, double K_Ic);
+
+  // The tension field -p_fc of the surface `heights` (m) on a half-space of
+  // modulus E* (Pa): its moments (m0 = V), its summits and their mean
+  // curvature (of (k1 + k2)/2, Pa/m^2; 0 without summits). The whole field,
+  // as find_summits.
+  struct TensionSummits
+  {
+    FieldMoments        moments;
+    std::vector<Summit> summits;
+    double              mean_curvature;
+  };
+  TensionSummits tension_summits(const FourierTransform &transform, const GridField &heights, double E_star);
 } // namespace penny
