@@ -13,14 +13,6 @@ namespace penny
 {
   namespace
   {
-    unsigned int power_of_two_above(const double n)
-    {
-      unsigned int p = 16;
-      while (p < n)
-        p *= 2;
-      return p;
-    }
-
     // Share of the grid points whose gap exceeds `level`.
     double share_above(const GridField &gap, const double level)
     {
@@ -32,10 +24,18 @@ namespace penny
 
   } // namespace
 
+  unsigned int power_of_two_at_least(const double x, const unsigned int smallest)
+  {
+    unsigned int p = smallest;
+    while (p < x)
+      p *= 2;
+    return p;
+  }
+
   unsigned int AdhesiveRandomSurfaces::grid_points(const double zone) const
   {
     const double zeta = spectrum.wavenumbers.back() / spectrum.wavenumbers.front();
-    return power_of_two_above(zones.points_per_zone * zeta / zone);
+    return power_of_two_at_least(zones.points_per_zone * zeta / zone, 16);
   }
 
   std::vector<double> RealisationAreas::pack() const
@@ -76,7 +76,7 @@ namespace penny
     const double q0 = surfaces.spectrum.wavenumbers.front(), q1 = surfaces.spectrum.wavenumbers.back();
     const double period = 2 * M_PI / q0, shortest = 2 * M_PI / q1;
     // The surface on a grid that holds every mode of the spectrum, then on each zone's.
-    const FourierTransform base(square_grid(power_of_two_above(4 * q1 / q0), period));
+    const FourierTransform base(square_grid(power_of_two_at_least(4 * q1 / q0, 16), period));
     return solve_surface(
         surfaces, base, gaussian_field(base, surfaces.spectrum, seed), shortest,
         [&](const double zone) { return square_grid(surfaces.grid_points(zone), period); }, fields);

@@ -18,6 +18,9 @@
 
 namespace penny
 {
+  // The least power of two at or above x and `smallest` (a power of two): a grid's points a side.
+  unsigned int power_of_two_at_least(double x, unsigned int smallest = 1);
+
   // One power law and its adhesion, and how its realisations are solved.
   struct AdhesiveRandomSurfaces
   {
@@ -82,7 +85,7 @@ namespace penny
   RealisationAreas solve_surface(const AdhesiveRandomSurfaces &surfaces, const FourierTransform &base,
                                  const GridField &heights, double shortest,
                                  const std::function<PeriodicGrid(double zone)> &zone_grid,
-                                 RealisationFields *fields = nullptr);
+                                 RealisationFields                              *fields = nullptr);
 
   // The JKR limit of one branch at one load over realisations: the mean
   // area at each cohesive zone, the leading order the last three means show

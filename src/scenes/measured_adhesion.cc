@@ -41,15 +41,6 @@ namespace penny
 {
   namespace
   {
-    // The least power of two at or above x.
-    unsigned int power_of_two_at_least(const double x)
-    {
-      unsigned int p = 1;
-      while (p < x)
-        p *= 2;
-      return p;
-    }
-
     std::string value_with_error(const double value, const double error)
     {
       return Table::label(value, 4) + (std::isfinite(error) ? " +- " + Table::label(error, 2) : "");
